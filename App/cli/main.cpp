@@ -1,0 +1,58 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// `sliceform`: the command line face of the core. Errors are printed as one line on stderr
+// and mapped to the exit codes documented in --help.
+#include <iostream>
+
+#include "cli/commands.hpp"
+#include "support/error.hpp"
+
+namespace {
+
+constexpr const char* kFooter = R"(Exit codes:
+  0  success
+  1  internal error (a bug: please report it with the input)
+  2  wrong command line
+  3  the model cannot be used (unreadable, not a closed solid, ...)
+  4  a parameter is out of range
+  5  an output cannot be written)";
+
+int exitCode(sliceform::ErrorKind kind) {
+  switch (kind) {
+    case sliceform::ErrorKind::BadInput:
+      return 3;
+    case sliceform::ErrorKind::BadParameter:
+      return 4;
+    case sliceform::ErrorKind::Io:
+      return 5;
+    case sliceform::ErrorKind::Geometry:
+      return 1;
+  }
+  return 1;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{
+      "sliceform: turn a solid (STEP, IGES, BREP, STL, OBJ, OFF) into a paper sliceform.\n"
+      "Lengths are millimetres."};
+  app.footer(kFooter);
+  app.require_subcommand(1);
+  sliceform::cli::Run slice = sliceform::cli::addSliceCommand(app);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    const int code = app.exit(e);
+    return code == 0 ? 0 : 2;
+  }
+  try {
+    if (app.got_subcommand("slice")) slice();
+    return 0;
+  } catch (const sliceform::Error& e) {
+    std::cerr << "sliceform: " << e.what() << "\n";
+    return exitCode(e.kind());
+  } catch (const std::exception& e) {
+    std::cerr << "sliceform: internal error: " << e.what() << "\n";
+    return 1;
+  }
+}

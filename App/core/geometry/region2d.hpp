@@ -1,0 +1,68 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// Region2d: a planar region with holes, the currency of every search stage (slices,
+// cylinder cross-sections, hinge tests). Stored as Clipper integer polygons so unions,
+// intersections and offsets are exact and robust; coordinates are in millimetres at the
+// interface and in units of 1/kUnitsPerMm mm inside.
+//
+// Invariant: the paths are normalised (no overlaps, no self-intersections), outer loops
+// counter-clockwise (positive area, y up), holes clockwise.
+#pragma once
+
+#include <polyclipping/clipper.hpp>
+
+#include <vector>
+
+#include "geometry/vec.hpp"
+
+namespace sliceform {
+
+enum class FillRule { EvenOdd, NonZero };
+
+struct Box2 {
+  Vec2 min, max;
+  bool empty = true;
+};
+
+class Region2d {
+ public:
+  // 10 nm: far below any cutting tolerance, and keeps models up to ~10 m inside Clipper's
+  // fast 32-bit-product range (coordinates below 2^30 units).
+  static constexpr double kUnitsPerMm = 1e5;
+  using Loop = std::vector<Vec2>;
+
+  Region2d() = default;
+  // Loops in mm with any orientation; `rule` decides what is inside.
+  static Region2d fromLoops(const std::vector<Loop>& loops, FillRule rule = FillRule::EvenOdd);
+  static Region2d fromPaths(const ClipperLib::Paths& paths, FillRule rule);
+  static Region2d uniteAll(const std::vector<Region2d>& regions);
+
+  const ClipperLib::Paths& paths() const { return paths_; }
+  // Loops in mm: outer loops counter-clockwise, holes clockwise.
+  std::vector<Loop> loops() const;
+  bool empty() const { return paths_.empty(); }
+  double area() const;  // mm²
+  Box2 bounds() const;
+  int holeCount() const;
+
+  // Connected pieces, each one outer loop with its holes.
+  std::vector<Region2d> components() const;
+
+  Region2d unite(const Region2d& other) const;
+  Region2d intersect(const Region2d& other) const;
+  Region2d subtract(const Region2d& other) const;
+  // Grows (delta > 0) or erodes (delta < 0) by |delta| mm, with round corners.
+  Region2d offset(double deltaMm) const;
+
+  // Where the line point + t * dir (dir a unit vector) runs inside the region, as sorted
+  // intervals of t in mm. For a slice frame whose y axis is W and the vertical line
+  // x = c, this gives the W-intervals a hinge at c can use.
+  std::vector<Interval> intervalsOnLine(Vec2 point, Vec2 dir) const;
+
+  static ClipperLib::cInt toUnits(double mm);
+  static double toMm(ClipperLib::cInt units) { return static_cast<double>(units) / kUnitsPerMm; }
+
+ private:
+  ClipperLib::Paths paths_;
+};
+
+}  // namespace sliceform

@@ -1,0 +1,196 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+#include "model/model.hpp"
+
+#include <BRepBndLib.hxx>
+#include <BRepBuilderAPI_MakeSolid.hxx>
+#include <BRepMesh_IncrementalMesh.hxx>
+#include <BRepTools.hxx>
+#include <BRep_Builder.hxx>
+#include <BRep_Tool.hxx>
+#include <Bnd_Box.hxx>
+#include <IFSelect_ReturnStatus.hxx>
+#include <IGESControl_Reader.hxx>
+#include <Poly_Triangulation.hxx>
+#include <RWObj.hxx>
+#include <RWStl.hxx>
+#include <STEPControl_Reader.hxx>
+#include <TopExp_Explorer.hxx>
+#include <TopoDS.hxx>
+#include <TopoDS_Compound.hxx>
+
+#include <algorithm>
+#include <cctype>
+#include <filesystem>
+
+#include "support/error.hpp"
+#include "support/occt_guard.hpp"
+
+namespace sliceform {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string lowerExtension(const std::string& path) {
+  std::string ext = fs::path(path).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+  return ext;
+}
+
+Mesh fromPoly(const Handle(Poly_Triangulation) & poly) {
+  Mesh mesh;
+  mesh.vertices.reserve(poly->NbNodes());
+  for (Standard_Integer i = 1; i <= poly->NbNodes(); ++i) {
+    const gp_Pnt p = poly->Node(i);
+    mesh.vertices.push_back({p.X(), p.Y(), p.Z()});
+  }
+  mesh.triangles.reserve(poly->NbTriangles());
+  for (Standard_Integer i = 1; i <= poly->NbTriangles(); ++i) {
+    Standard_Integer a, b, c;
+    poly->Triangle(i).Get(a, b, c);
+    // Out-of-range indices are caught by validateMesh: keep them out of range (not negative).
+    auto id = [](Standard_Integer k) { return static_cast<uint32_t>(k < 1 ? UINT32_MAX : k - 1); };
+    mesh.triangles.push_back({id(a), id(b), id(c)});
+  }
+  return mesh;
+}
+
+TopoDS_Shape readCad(const std::string& path, const std::string& ext) {
+  if (ext == ".brep" || ext == ".brp") {
+    TopoDS_Shape shape;
+    BRep_Builder builder;
+    if (!BRepTools::Read(shape, path.c_str(), builder) || shape.IsNull())
+      throw Error(ErrorKind::BadInput, path + ": not a readable BREP file");
+    return shape;
+  }
+  auto transfer = [&](XSControl_Reader& reader, const char* format) {
+    if (reader.ReadFile(path.c_str()) != IFSelect_RetDone)
+      throw Error(ErrorKind::BadInput, path + ": not a readable " + format + " file");
+    reader.TransferRoots();
+    TopoDS_Shape shape = reader.OneShape();
+    if (shape.IsNull()) throw Error(ErrorKind::BadInput, path + ": the " + format + " file holds no shape");
+    return shape;
+  };
+  if (ext == ".step" || ext == ".stp") {
+    STEPControl_Reader reader;
+    return transfer(reader, "STEP");
+  }
+  IGESControl_Reader reader;
+  return transfer(reader, "IGES");
+}
+
+Mesh readMeshFile(const std::string& path, const std::string& ext) {
+  if (ext == ".off") return readOff(path);
+  Handle(Poly_Triangulation) poly =
+      ext == ".stl" ? RWStl::ReadFile(path.c_str()) : RWObj::ReadFile(path.c_str());
+  if (poly.IsNull() || poly->NbTriangles() == 0)
+    throw Error(ErrorKind::BadInput, path + ": no triangles could be read from the file");
+  return fromPoly(poly);
+}
+
+// The solids of a shape; closed shells become solids, anything else is refused.
+TopoDS_Shape solidsOf(const TopoDS_Shape& shape, const std::string& source) {
+  TopoDS_Compound solids;
+  BRep_Builder builder;
+  builder.MakeCompound(solids);
+  int count = 0;
+  for (TopExp_Explorer it(shape, TopAbs_SOLID); it.More(); it.Next(), ++count)
+    builder.Add(solids, it.Current());
+  for (TopExp_Explorer it(shape, TopAbs_SHELL, TopAbs_SOLID); it.More(); it.Next()) {
+    if (!BRep_Tool::IsClosed(it.Current())) continue;
+    BRepBuilderAPI_MakeSolid maker(TopoDS::Shell(it.Current()));
+    if (maker.IsDone()) {
+      builder.Add(solids, maker.Solid());
+      ++count;
+    }
+  }
+  if (count == 0) {
+    int faces = 0;
+    for (TopExp_Explorer it(shape, TopAbs_FACE); it.More(); it.Next()) ++faces;
+    throw Error(ErrorKind::BadInput, source + ": the shape holds no closed solid (" + std::to_string(faces) +
+                                         " faces, none enclosing a volume); a sliceform needs a solid");
+  }
+  return solids;
+}
+
+// The triangulation OCCT attaches to each face, gathered into one welded mesh with the
+// triangles turned to face outwards.
+Mesh triangulate(const TopoDS_Shape& shape, double deflection) {
+  BRepMesh_IncrementalMesh mesher(shape, deflection, Standard_False, 0.35, Standard_True);
+  Mesh mesh;
+  for (TopExp_Explorer it(shape, TopAbs_FACE); it.More(); it.Next()) {
+    const TopoDS_Face& face = TopoDS::Face(it.Current());
+    TopLoc_Location location;
+    Handle(Poly_Triangulation) poly = BRep_Tool::Triangulation(face, location);
+    if (poly.IsNull()) continue;
+    const gp_Trsf trsf = location.Transformation();
+    const auto base = static_cast<uint32_t>(mesh.vertices.size());
+    for (Standard_Integer i = 1; i <= poly->NbNodes(); ++i) {
+      const gp_Pnt p = poly->Node(i).Transformed(trsf);
+      mesh.vertices.push_back({p.X(), p.Y(), p.Z()});
+    }
+    const bool reversed = face.Orientation() == TopAbs_REVERSED;
+    for (Standard_Integer i = 1; i <= poly->NbTriangles(); ++i) {
+      Standard_Integer a, b, c;
+      poly->Triangle(i).Get(a, b, c);
+      if (reversed) std::swap(b, c);
+      mesh.triangles.push_back({base + a - 1, base + b - 1, base + c - 1});
+    }
+  }
+  return weldExact(mesh);
+}
+
+}  // namespace
+
+Model readModel(const std::string& path) {
+  std::error_code ec;
+  if (!fs::is_regular_file(path, ec)) throw Error(ErrorKind::BadInput, path + ": no such file");
+  if (fs::file_size(path, ec) == 0) throw Error(ErrorKind::BadInput, path + ": the file is empty");
+  const std::string ext = lowerExtension(path);
+  static const char* cad[] = {".step", ".stp", ".iges", ".igs", ".brep", ".brp"};
+  static const char* meshes[] = {".stl", ".obj", ".off"};
+  if (std::find(std::begin(cad), std::end(cad), ext) != std::end(cad))
+    return modelFromShape(occtGuard("reading the CAD file", [&] { return readCad(path, ext); }), path);
+  if (std::find(std::begin(meshes), std::end(meshes), ext) != std::end(meshes))
+    return modelFromMesh(occtGuard("reading the mesh file", [&] { return readMeshFile(path, ext); }), path);
+  throw Error(ErrorKind::BadInput,
+              path + ": unknown format \"" + ext + "\" (expected STEP, IGES, BREP, STL, OBJ or OFF)");
+}
+
+Model modelFromShape(const TopoDS_Shape& shape, const std::string& source, double deflection) {
+  if (shape.IsNull()) throw Error(ErrorKind::BadInput, source + ": the shape is empty");
+  Model model;
+  model.source = source;
+  model.kind = SourceKind::Brep;
+  model.shape = solidsOf(shape, source);
+  Bnd_Box box;
+  occtGuard("measuring the shape", [&] { BRepBndLib::AddOptimal(model.shape, box, Standard_False); });
+  if (box.IsVoid()) throw Error(ErrorKind::BadInput, source + ": the shape has no extent");
+  double x0, y0, z0, x1, y1, z1;
+  box.Get(x0, y0, z0, x1, y1, z1);
+  model.bounds.add({x0, y0, z0});
+  model.bounds.add({x1, y1, z1});
+  model.meshDeflection = deflection > 0 ? deflection : 1e-3 * model.bounds.diagonal();
+  model.mesh =
+      occtGuard("triangulating the shape", [&] { return triangulate(model.shape, model.meshDeflection); });
+  validateMesh(model.mesh, source);
+  return model;
+}
+
+Model modelFromMesh(const Mesh& mesh, const std::string& source) {
+  validateMesh(mesh, source);
+  Model model;
+  model.source = source;
+  model.kind = SourceKind::Mesh;
+  model.mesh = weldExact(mesh);
+  if (model.mesh.triangles.empty())
+    throw Error(ErrorKind::BadInput, source + ": every triangle has zero area (repeated vertices)");
+  model.bounds = model.mesh.bounds();
+  return model;
+}
+
+void requireClosed(const Model& model) {
+  const MeshTopology topo = analyseTopology(model.mesh);
+  if (!topo.closed()) throw Error(ErrorKind::BadInput, model.source + ": " + topo.describe());
+}
+
+}  // namespace sliceform

@@ -1,0 +1,41 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// Model: the source solid as the pipeline sees it. A CAD source keeps its exact OCCT shape
+// (for the exact patches) plus a triangulation (for the search stages); a mesh source is
+// the triangulation alone. Lengths are millimetres: STEP and IGES are converted by OCCT,
+// BREP and mesh files carry no unit and are taken as millimetres.
+#pragma once
+
+#include <TopoDS_Shape.hxx>
+
+#include <string>
+
+#include "model/mesh.hpp"
+
+namespace sliceform {
+
+enum class SourceKind { Brep, Mesh };
+
+struct Model {
+  std::string source;  // file name or a caller's label, for messages
+  SourceKind kind = SourceKind::Mesh;
+  TopoDS_Shape shape;         // the solids, for BRep sources; null for meshes
+  Mesh mesh;                  // closed triangle mesh, welded
+  Box3 bounds;                // of the shape (or mesh), mm
+  double meshDeflection = 0;  // how far the triangulation may stray from the shape, mm
+};
+
+// Reads STEP, IGES, BREP, STL, OBJ or OFF (chosen by the file extension).
+Model readModel(const std::string& path);
+
+// Solids of `shape` (closed shells are made solids), triangulated for the search stages.
+// `deflection` <= 0 picks 1/1000 of the bounding box diagonal.
+Model modelFromShape(const TopoDS_Shape& shape, const std::string& source, double deflection = 0);
+Model modelFromMesh(const Mesh& mesh, const std::string& source);
+
+// Throws BadInput naming the boundary and non-manifold edges if the mesh is not closed.
+void requireClosed(const Model& model);
+
+// Readers of the mesh formats OCCT has no reader for.
+Mesh readOff(const std::string& path);
+
+}  // namespace sliceform

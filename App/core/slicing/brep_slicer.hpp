@@ -1,0 +1,29 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// Exact slicer: the cross-sections of a BRep solid as OCCT planar faces with their true
+// edges (a section of a cylinder is a circle, not a polygon), plus the polygonised region
+// the search stages use.
+#pragma once
+
+#include <TopoDS_Shape.hxx>
+
+#include <vector>
+
+#include "slicing/slice_set.hpp"
+
+namespace sliceform {
+
+struct ExactSlice {
+  double position = 0;
+  TopoDS_Shape faces;  // compound of planar faces in 3D, null where the plane misses
+  double area = 0;     // of the faces, mm², from OCCT's surface integration
+  Region2d region;     // the faces' boundaries polygonised within `deflection`
+};
+
+// `deflection` is the largest distance, in mm, between an edge and its polygon.
+std::vector<ExactSlice> sliceBrep(const TopoDS_Shape& solid, const SliceFrame& frame,
+                                  const std::vector<double>& positions, double deflection);
+
+// The outer and hole loops of planar faces, polygonised, in the frame's 2D coordinates.
+Region2d polygoniseFaces(const TopoDS_Shape& faces, const SliceFrame& frame, double deflection);
+
+}  // namespace sliceform
