@@ -1,0 +1,27 @@
+# SPDX-License-Identifier: LGPL-2.1-or-later
+# Sliceform workbench registration (GUI only). Commands are imported in Initialize(), when
+# the user first activates the workbench, not at FreeCAD start-up.
+import FreeCADGui
+
+
+class SliceformWorkbench(FreeCADGui.Workbench):
+    MenuText = "Sliceform"
+    ToolTip = "Turn a solid into a paper sliceform: slotted patches that fold flat"
+
+    def __init__(self):
+        import sliceform_gui
+
+        self.__class__.Icon = sliceform_gui.icon_path("Sliceform.svg")
+
+    def Initialize(self):
+        from sliceform_gui import commands
+
+        names = commands.register()
+        self.appendToolbar("Sliceform", names)
+        self.appendMenu("&Sliceform", names)
+
+    def GetClassName(self):
+        return "Gui::PythonWorkbench"
+
+
+FreeCADGui.addWorkbench(SliceformWorkbench())
