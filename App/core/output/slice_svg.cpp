@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <string>
 
 #include "support/atomic_file.hpp"
 #include "support/error.hpp"
@@ -50,11 +51,35 @@ void drawRegion(cairo_t* cr, const Region2d& region, double ox, double oy, const
   cairo_stroke(cr);
 }
 
+std::string labelOf(const Slice& slice, int index) {
+  char label[96];
+  std::snprintf(label, sizeof label, "#%d  at %.2f mm  %.1f mm2", index, slice.position, slice.region.area());
+  return label;
+}
+
+// Width of the widest label in mm, so that labels of small models do not overlap.
+double widestLabel(const SliceSet& set) {
+  cairo_surface_t* scratch = cairo_image_surface_create(CAIRO_FORMAT_A8, 1, 1);
+  cairo_t* cr = cairo_create(scratch);
+  cairo_select_font_face(cr, "sans-serif", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
+  cairo_set_font_size(cr, kFont);
+  double widest = 0;
+  for (size_t i = 0; i < set.slices.size(); ++i) {
+    cairo_text_extents_t extents;
+    cairo_text_extents(cr, labelOf(set.slices[i], static_cast<int>(i)).c_str(), &extents);
+    widest = std::max(widest, extents.x_advance);
+  }
+  cairo_destroy(cr);
+  cairo_surface_destroy(scratch);
+  return widest;
+}
+
 }  // namespace
 
 void writeSliceSetSvg(const SliceSet& set, const std::string& title, const std::string& path) {
   const Box2 box = boundsOf(set);
-  const double cellW = box.empty ? 10 : box.max.x - box.min.x;
+  const double shapeW = box.empty ? 10 : box.max.x - box.min.x;
+  const double cellW = std::max(shapeW, widestLabel(set));
   const double cellH = (box.empty ? 10 : box.max.y - box.min.y) + kLabel;
   const int n = static_cast<int>(set.slices.size());
   const int columns = std::max(1, static_cast<int>(std::ceil(std::sqrt(n * cellH / std::max(cellW, 1e-6)))));
@@ -77,12 +102,10 @@ void writeSliceSetSvg(const SliceSet& set, const std::string& title, const std::
       const double ox = kGap + (i % columns) * (cellW + kGap);
       const double oy = 2 * kGap + (i / columns) * (cellH + kGap);
       const Slice& slice = set.slices[i];
-      if (!box.empty) drawRegion(cr, slice.region, ox, oy, box);
-      char label[96];
-      std::snprintf(label, sizeof label, "#%d  at %.2f mm  %.1f mm2", i, slice.position, slice.region.area());
+      if (!box.empty) drawRegion(cr, slice.region, ox + (cellW - shapeW) / 2, oy, box);
       cairo_set_source_rgb(cr, 0, 0, 0.7);
       cairo_move_to(cr, ox, oy + cellH - kLabel + kFont + 0.5);
-      cairo_show_text(cr, label);
+      cairo_show_text(cr, labelOf(slice, i).c_str());
     }
     cairo_destroy(cr);
     cairo_surface_finish(surface);
