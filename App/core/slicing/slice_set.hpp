@@ -10,6 +10,9 @@
 
 namespace sliceform {
 
+// The two families of patches: U-patches lie in planes normal to U, V-patches normal to V.
+enum class Family { U, V };
+
 // Plane coordinates of a slice set. A point p lies on the slice at position dot(p, normal)
 // and has 2D coordinates (dot(p, xAxis), dot(p, yAxis)). The y axis is "up" (W), so a
 // hinge, which is parallel to W, is a vertical line x = const in every slice. The frame is

@@ -1,0 +1,93 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+#include "cylinders/gca.hpp"
+
+#include <cmath>
+#include <limits>
+
+#include "support/error.hpp"
+
+namespace sliceform {
+
+double cylinderError(const std::vector<Region2d>& patches, int i, int j, double ds) {
+  std::vector<Region2d> run(patches.begin() + i, patches.begin() + j + 1);
+  const double unionArea = Region2d::uniteAll(run).area();
+  double sum = 0;
+  for (const Region2d& p : run) sum += unionArea - p.area();
+  return ds * sum;
+}
+
+std::vector<std::pair<int, int>> partitionPatches(const std::vector<Region2d>& patches, double ds,
+                                                  double tauA) {
+  if (!(tauA >= 0)) throw Error(ErrorKind::BadParameter, "tauA must be zero or positive");
+  const int n = static_cast<int>(patches.size());
+  if (n == 0) return {};
+  std::vector<double> area(n);
+  double volume = 0;
+  for (int k = 0; k < n; ++k) volume += (area[k] = patches[k].area()) * ds;
+  const double budget = tauA * volume;
+
+  // err(i, j) for every run, with the union grown one patch at a time. The error only
+  // grows as a run gets longer, so a run is not extended past the budget: those longer
+  // runs can never be part of an answer (infinite error).
+  constexpr double kInf = std::numeric_limits<double>::infinity();
+  std::vector<std::vector<double>> err(n, std::vector<double>(n, kInf));
+  for (int i = 0; i < n; ++i) {
+    Region2d u = patches[i];
+    double sumArea = 0;
+    for (int j = i; j < n; ++j) {
+      if (j > i) u = u.unite(patches[j]);
+      sumArea += area[j];
+      err[i][j] = ds * ((j - i + 1) * u.area() - sumArea);
+      if (err[i][j] > budget) break;
+    }
+  }
+  // D[m][i]: least error of patches i..n-1 in m groups (eq. 2, suffix form); choice[m][i]
+  // the end of the first group. Stop at the first m whose best error fits the budget.
+  std::vector<std::vector<double>> best{std::vector<double>(n + 1, kInf)};
+  std::vector<std::vector<int>> choice{std::vector<int>(n + 1, -1)};
+  best[0][n] = 0;
+  for (int m = 1; m <= n; ++m) {
+    best.emplace_back(n + 1, kInf);
+    choice.emplace_back(n + 1, -1);
+    for (int i = 0; i < n; ++i) {
+      for (int k = i; k < n && err[i][k] < kInf; ++k) {
+        const double total = err[i][k] + best[m - 1][k + 1];
+        if (total < best[m][i]) {
+          best[m][i] = total;
+          choice[m][i] = k;
+        }
+      }
+    }
+    if (best[m][0] <= budget) {
+      std::vector<std::pair<int, int>> groups;
+      for (int i = 0, left = m; i < n; --left) {
+        const int k = choice[left][i];
+        groups.emplace_back(i, k);
+        i = k + 1;
+      }
+      return groups;
+    }
+  }
+  // Every patch alone has zero error, so m = n always fits: unreachable.
+  throw Error(ErrorKind::Geometry, "cylinder approximation found no partition");
+}
+
+std::vector<Cylinder> approximateCylinders(const ReebGraph& graph, Family family, double ds, double tauA) {
+  std::vector<Cylinder> out;
+  for (size_t e = 0; e < graph.edges.size(); ++e) {
+    const ReebEdge& edge = graph.edges[e];
+    for (const auto& [i, j] : partitionPatches(edge.patches, ds, tauA)) {
+      Cylinder c;
+      c.family = family;
+      c.reebEdge = static_cast<int>(e);
+      c.firstSlice = edge.firstSlice + i;
+      c.lastSlice = edge.firstSlice + j;
+      c.section = Region2d::uniteAll({edge.patches.begin() + i, edge.patches.begin() + j + 1});
+      c.error = cylinderError(edge.patches, i, j, ds);
+      out.push_back(std::move(c));
+    }
+  }
+  return out;
+}
+
+}  // namespace sliceform

@@ -1,0 +1,157 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+#include "reeb/reeb_graph.hpp"
+
+#include <boost/pending/disjoint_sets.hpp>
+
+#include <map>
+#include <utility>
+
+namespace sliceform {
+namespace {
+
+bool boxesOverlap(const Box2& a, const Box2& b) {
+  return !a.empty && !b.empty && a.min.x <= b.max.x && b.min.x <= a.max.x && a.min.y <= b.max.y &&
+         b.min.y <= a.max.y;
+}
+
+// Pieces of consecutive slices are joined when their overlap has area.
+bool overlap(const Region2d& a, const Region2d& b) {
+  return boxesOverlap(a.bounds(), b.bounds()) && a.intersect(b).area() > 0;
+}
+
+// Renumbers vertices 0..n-1 after edges were removed or joined.
+void compactVertices(ReebGraph& g) {
+  std::map<int, int> ids;
+  for (ReebEdge& e : g.edges) {
+    for (int* v : {&e.tail, &e.head}) *v = ids.emplace(*v, static_cast<int>(ids.size())).first->second;
+  }
+  g.vertexCount = static_cast<int>(ids.size());
+}
+
+int degree(const ReebGraph& g, int vertex) {
+  return static_cast<int>(g.incoming(vertex).size() + g.outgoing(vertex).size());
+}
+
+// One merge of §4.1.2 if any applies; false when the graph is simplified.
+bool mergeOnce(ReebGraph& g, double tauM) {
+  for (int v = 0; v < g.vertexCount; ++v) {
+    const std::vector<int> in = g.incoming(v), out = g.outgoing(v);
+    if (in.size() == 1 && out.size() == 1 && in[0] != out[0]) {
+      ReebEdge& e = g.edges[in[0]];
+      ReebEdge& next = g.edges[out[0]];
+      e.patches.insert(e.patches.end(), next.patches.begin(), next.patches.end());
+      e.head = next.head;
+      g.edges.erase(g.edges.begin() + out[0]);
+      compactVertices(g);
+      return true;
+    }
+    // Left merge (one outgoing, several incoming) or right merge (the mirror).
+    const bool left = out.size() == 1 && in.size() > 1;
+    const bool right = in.size() == 1 && out.size() > 1;
+    if (!left && !right) continue;
+    const int keep = left ? out[0] : in[0];
+    for (int small : left ? in : out) {
+      const ReebEdge& s = g.edges[small];
+      const int farEnd = left ? s.tail : s.head;
+      if (degree(g, farEnd) != 1) continue;  // not dangling
+      if (!(s.weight() < tauM * g.edges[keep].weight())) continue;
+      ReebEdge& k = g.edges[keep];
+      Region2d& cap = left ? k.patches.front() : k.patches.back();
+      std::vector<Region2d> all = s.patches;
+      all.push_back(cap);
+      cap = Region2d::uniteAll(all);
+      g.edges.erase(g.edges.begin() + small);
+      compactVertices(g);
+      return true;
+    }
+  }
+  return false;
+}
+
+}  // namespace
+
+double ReebEdge::weight() const {
+  double w = 0;
+  for (const Region2d& p : patches) w += p.area();
+  return w;
+}
+
+std::vector<int> ReebGraph::incoming(int vertex) const {
+  std::vector<int> out;
+  for (size_t i = 0; i < edges.size(); ++i)
+    if (edges[i].head == vertex) out.push_back(static_cast<int>(i));
+  return out;
+}
+
+std::vector<int> ReebGraph::outgoing(int vertex) const {
+  std::vector<int> out;
+  for (size_t i = 0; i < edges.size(); ++i)
+    if (edges[i].tail == vertex) out.push_back(static_cast<int>(i));
+  return out;
+}
+
+ReebGraph buildReebGraph(const SliceSet& set) {
+  // Nodes: the pieces of every slice; links: overlaps between consecutive slices.
+  const int slices = static_cast<int>(set.slices.size());
+  std::vector<std::vector<Region2d>> pieces(slices);
+  for (int i = 0; i < slices; ++i) pieces[i] = set.slices[i].region.components();
+  std::vector<std::vector<std::vector<int>>> next(slices), prev(slices);
+  for (int i = 0; i < slices; ++i) {
+    next[i].resize(pieces[i].size());
+    prev[i].resize(pieces[i].size());
+  }
+  for (int i = 0; i + 1 < slices; ++i) {
+    for (size_t a = 0; a < pieces[i].size(); ++a) {
+      for (size_t b = 0; b < pieces[i + 1].size(); ++b) {
+        if (!overlap(pieces[i][a], pieces[i + 1][b])) continue;
+        next[i][a].push_back(static_cast<int>(b));
+        prev[i + 1][b].push_back(static_cast<int>(a));
+      }
+    }
+  }
+  // Edges: maximal runs where a piece has one successor and that successor one predecessor.
+  ReebGraph g;
+  std::map<std::pair<int, int>, int> edgeOfFirst, edgeOfLast;
+  auto continues = [&](int i, int a) {
+    return prev[i][a].size() == 1 && next[i - 1][prev[i][a][0]].size() == 1;
+  };
+  for (int i = 0; i < slices; ++i) {
+    for (int a = 0; a < static_cast<int>(pieces[i].size()); ++a) {
+      if (i > 0 && continues(i, a)) continue;
+      ReebEdge e;
+      e.firstSlice = i;
+      int s = i, p = a;
+      e.patches.push_back(pieces[s][p]);
+      while (s + 1 < slices && next[s][p].size() == 1 && prev[s + 1][next[s][p][0]].size() == 1) {
+        p = next[s][p][0];
+        ++s;
+        e.patches.push_back(pieces[s][p]);
+      }
+      edgeOfFirst[{i, a}] = static_cast<int>(g.edges.size());
+      edgeOfLast[{s, p}] = static_cast<int>(g.edges.size());
+      g.edges.push_back(std::move(e));
+    }
+  }
+  // Vertices: an edge's head is joined with the tails of the edges its last piece leads to.
+  const int ends = 2 * static_cast<int>(g.edges.size());  // tail of edge k = 2k, head = 2k + 1
+  std::vector<int> rank(ends), parent(ends);
+  boost::disjoint_sets<int*, int*> sets(rank.data(), parent.data());
+  for (int k = 0; k < ends; ++k) sets.make_set(k);
+  for (const auto& [last, edge] : edgeOfLast) {
+    for (int b : next[last.first][last.second])
+      sets.union_set(2 * edge + 1, 2 * edgeOfFirst.at({last.first + 1, b}));
+  }
+  for (size_t k = 0; k < g.edges.size(); ++k) {
+    g.edges[k].tail = sets.find_set(2 * static_cast<int>(k));
+    g.edges[k].head = sets.find_set(2 * static_cast<int>(k) + 1);
+  }
+  compactVertices(g);
+  return g;
+}
+
+void simplifyReebGraph(ReebGraph& graph, double tauM) {
+  while (mergeOnce(graph, tauM)) {
+  }
+}
+
+}  // namespace sliceform

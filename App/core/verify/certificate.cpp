@@ -1,0 +1,71 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+#include "verify/certificate.hpp"
+
+#include <Eigen/Dense>
+
+#include <algorithm>
+#include <cmath>
+#include <set>
+#include <utility>
+
+namespace sliceform {
+
+Certificate certify(const std::vector<BarPatch>& patches, const std::vector<PinHinge>& hinges) {
+  Certificate c;
+  c.patches = static_cast<int>(patches.size());
+  if (patches.size() < 2) {
+    c.reason = "a scaffold needs at least two patches";
+    return c;
+  }
+  // Several hinges of one pair lie on one line parallel to W: one pin in the plane.
+  std::set<std::pair<int, int>> pins;
+  for (const PinHinge& h : hinges) {
+    if (h.a < 0 || h.b < 0 || h.a >= c.patches || h.b >= c.patches) {
+      c.reason = "a hinge names a patch that does not exist";
+      return c;
+    }
+    if (patches[h.a].family == patches[h.b].family) {
+      c.reason = "a hinge joins two patches of the same family";
+      return c;
+    }
+    pins.insert(std::minmax(h.a, h.b));
+  }
+  c.pins = static_cast<int>(pins.size());
+
+  // Scale to the unit box so that the rank threshold means the same for any model size.
+  double scale = 0;
+  for (const BarPatch& p : patches) scale = std::max(scale, std::fabs(p.position));
+  scale = scale > 0 ? 1.0 / scale : 1.0;
+
+  // Unknowns: (vx, vy, omega) of every patch but patch 0, which is held.
+  const int n = c.patches;
+  Eigen::MatrixXd m = Eigen::MatrixXd::Zero(2 * static_cast<int>(pins.size()), 3 * (n - 1));
+  int row = 0;
+  for (const auto& [i, j] : pins) {
+    const BarPatch& u = patches[i].family == Family::U ? patches[i] : patches[j];
+    const BarPatch& v = patches[i].family == Family::U ? patches[j] : patches[i];
+    const double px = u.position * scale, py = v.position * scale;  // the pin at (u, v)
+    // Velocity of body k at p: (vx - omega * py, vy + omega * px); rows: v_i(p) - v_j(p) = 0.
+    for (const auto& [body, sign] : {std::make_pair(i, 1.0), std::make_pair(j, -1.0)}) {
+      if (body == 0) continue;
+      const int col = 3 * (body - 1);
+      m(row, col) += sign;
+      m(row, col + 2) += -sign * py;
+      m(row + 1, col + 1) += sign;
+      m(row + 1, col + 2) += sign * px;
+    }
+    row += 2;
+  }
+  Eigen::FullPivLU<Eigen::MatrixXd> lu(m);
+  lu.setThreshold(1e-9);
+  c.nullity = static_cast<int>(m.cols() - lu.rank());
+  c.stable = c.nullity == 1;
+  if (!c.stable) {
+    c.reason = c.nullity == 0 ? "the scaffold cannot fold (no motion left with one patch held)"
+                              : "the scaffold wobbles: " + std::to_string(c.nullity - 1) +
+                                    " motion(s) beyond the fold with one patch held";
+  }
+  return c;
+}
+
+}  // namespace sliceform
