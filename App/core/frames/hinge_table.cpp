@@ -1,0 +1,73 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+#include "frames/hinge_table.hpp"
+
+#include <algorithm>
+
+namespace sliceform {
+namespace {
+
+// The x coordinate, in `frame`, of the plane at `position` of the other family's frame.
+double lineX(const SliceFrame& frame, const SliceFrame& other, double position) {
+  return position * dot(other.normal, frame.xAxis);
+}
+
+// Intervals of `section` along the vertical lines of every slice of `other`.
+std::vector<std::vector<Interval>> onLines(const Region2d& section, const SliceFrame& frame,
+                                           const SliceSet& other) {
+  std::vector<std::vector<Interval>> out;
+  out.reserve(other.slices.size());
+  const Box2 box = section.bounds();
+  for (const Slice& s : other.slices) {
+    const double x = lineX(frame, other.frame, s.position);
+    if (box.empty || x < box.min.x || x > box.max.x) {
+      out.emplace_back();
+      continue;
+    }
+    out.push_back(section.intervalsOnLine({x, 0}, {0, 1}));
+  }
+  return out;
+}
+
+}  // namespace
+
+std::vector<Interval> intersectIntervals(const std::vector<Interval>& a, const std::vector<Interval>& b) {
+  std::vector<Interval> out;
+  size_t i = 0, j = 0;
+  while (i < a.size() && j < b.size()) {
+    const double lo = std::max(a[i].lo, b[j].lo), hi = std::min(a[i].hi, b[j].hi);
+    if (hi > lo) out.push_back({lo, hi});
+    (a[i].hi < b[j].hi) ? ++i : ++j;
+  }
+  return out;
+}
+
+HingeTable::HingeTable(const SliceSet& u, const SliceSet& v, const std::vector<Cylinder>& uCylinders,
+                       const std::vector<Cylinder>& vCylinders, const HingeRules& rules)
+    : rules_(rules) {
+  for (const Cylinder& c : uCylinders) {
+    uFull_.push_back(onLines(c.section, u.frame, v));
+    uEroded_.push_back(onLines(c.section.offset(-rules.minSlotEdgeDistance), u.frame, v));
+  }
+  for (const Cylinder& c : vCylinders) {
+    vFull_.push_back(onLines(c.section, v.frame, u));
+    vEroded_.push_back(onLines(c.section.offset(-rules.minSlotEdgeDistance), v.frame, u));
+  }
+}
+
+std::vector<Interval> HingeTable::segments(int a, int i, int b, int j) const {
+  return intersectIntervals(uFull_[a][j], vFull_[b][i]);
+}
+
+bool HingeTable::holds(int a, int i, int b, int j) const {
+  for (const Interval& s : intersectIntervals(uEroded_[a][j], vEroded_[b][i]))
+    if (s.hi - s.lo >= rules_.minHingeLength) return true;
+  return false;
+}
+
+bool HingeTable::holds(int a, int i, int b, int j, const Interval& segment) const {
+  for (const Interval& s : intersectIntervals(uEroded_[a][j], vEroded_[b][i]))
+    if (s.hi - s.lo >= rules_.minHingeLength && s.lo >= segment.lo && s.hi <= segment.hi) return true;
+  return false;
+}
+
+}  // namespace sliceform

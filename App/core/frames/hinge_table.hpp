@@ -1,0 +1,44 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// Where patches of two cylinders of different families can hinge (§4.2, precomputed per
+// cylinder pair). A U-patch of cylinder a at U-slice i and a V-patch of cylinder b at
+// V-slice j meet on the line parallel to W through both planes. Every stretch of that line
+// inside both sections is a hinge segment (a slot must be cut there, or they collide); it
+// holds the scaffold together only if, on both sections eroded by min_slot_edge_distance,
+// it is still at least min_hinge_length long. That is the fix for weak slots (Fig. 16a).
+#pragma once
+
+#include <vector>
+
+#include "cylinders/gca.hpp"
+#include "geometry/vec.hpp"
+#include "slicing/slice_set.hpp"
+
+namespace sliceform {
+
+struct HingeRules {
+  double minHingeLength = 4;       // mm
+  double minSlotEdgeDistance = 2;  // mm of material on each side of a slot
+};
+
+class HingeTable {
+ public:
+  HingeTable(const SliceSet& u, const SliceSet& v, const std::vector<Cylinder>& uCylinders,
+             const std::vector<Cylinder>& vCylinders, const HingeRules& rules);
+
+  // Hinge segments as W-intervals (mm), empty if the patches do not meet.
+  std::vector<Interval> segments(int a, int i, int b, int j) const;
+  // Whether the two patches hold each other: some eroded overlap is long enough.
+  bool holds(int a, int i, int b, int j) const;
+  // Whether a particular segment (from segments()) is one that holds.
+  bool holds(int a, int i, int b, int j, const Interval& segment) const;
+
+ private:
+  // Sections of U-cylinder a on the line of V-slice j: full[a][j], eroded; and mirrored.
+  std::vector<std::vector<std::vector<Interval>>> uFull_, uEroded_, vFull_, vEroded_;
+  HingeRules rules_;
+};
+
+// Pieces of two sorted interval lists that lie in both.
+std::vector<Interval> intersectIntervals(const std::vector<Interval>& a, const std::vector<Interval>& b);
+
+}  // namespace sliceform

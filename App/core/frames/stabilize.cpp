@@ -1,0 +1,256 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+#include "frames/stabilize.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <set>
+
+namespace sliceform {
+namespace {
+
+struct Candidate {
+  Family family = Family::U;
+  int cylinder = 0;
+  int slice = 0;
+};
+
+class Builder {
+ public:
+  Builder(const SliceSet& u, const SliceSet& v, const std::vector<Cylinder>& cu,
+          const std::vector<Cylinder>& cv, const HingeTable& table)
+      : u_(u), v_(v), cu_(cu), cv_(cv), table_(table) {}
+
+  Scaffold scaffold;
+
+  const std::vector<Cylinder>& cylinders(Family f) const { return f == Family::U ? cu_ : cv_; }
+  double volume(Family f, int c) const {
+    const Cylinder& cyl = cylinders(f)[c];
+    return cyl.section.area() * (cyl.lastSlice - cyl.firstSlice + 1);
+  }
+
+  // The slices of a cylinder, middle first: the middle patch shows the cylinder best.
+  std::vector<int> slicesMiddleOut(Family f, int c) const {
+    const Cylinder& cyl = cylinders(f)[c];
+    std::vector<int> out;
+    for (int k = cyl.firstSlice; k <= cyl.lastSlice; ++k) out.push_back(k);
+    const double middle = 0.5 * (cyl.firstSlice + cyl.lastSlice);
+    std::stable_sort(out.begin(), out.end(),
+                     [&](int a, int b) { return std::fabs(a - middle) < std::fabs(b - middle); });
+    return out;
+  }
+
+  bool holds(const Candidate& p, const ScaffoldPatch& q) const {
+    if (p.family == q.family) return false;
+    return p.family == Family::U ? table_.holds(p.cylinder, p.slice, q.cylinder, q.slice)
+                                 : table_.holds(q.cylinder, q.slice, p.cylinder, p.slice);
+  }
+
+  // Placed patches of the other family that hold `c`, counted by distinct position.
+  int pins(const Candidate& c) const {
+    std::set<int> slices;
+    for (const ScaffoldPatch& q : scaffold.patches)
+      if (holds(c, q)) slices.insert(q.slice);
+    return static_cast<int>(slices.size());
+  }
+
+  bool placed(const Candidate& c) const {
+    return std::any_of(scaffold.patches.begin(), scaffold.patches.end(), [&](const ScaffoldPatch& p) {
+      return p.family == c.family && p.cylinder == c.cylinder && p.slice == c.slice;
+    });
+  }
+  bool covered(Family f, int c) const {
+    return std::any_of(scaffold.patches.begin(), scaffold.patches.end(),
+                       [&](const ScaffoldPatch& p) { return p.family == f && p.cylinder == c; });
+  }
+
+  void place(const Candidate& c) {
+    const SliceSet& set = c.family == Family::U ? u_ : v_;
+    scaffold.patches.push_back({c.family, c.cylinder, c.slice, set.slices[c.slice].position});
+  }
+
+  // Every (cylinder, slice) of a family, big cylinders and middle slices first.
+  std::vector<Candidate> candidates(Family f) const {
+    std::vector<int> order(cylinders(f).size());
+    for (size_t c = 0; c < order.size(); ++c) order[c] = static_cast<int>(c);
+    std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return volume(f, a) > volume(f, b); });
+    std::vector<Candidate> out;
+    for (int c : order)
+      for (int k : slicesMiddleOut(f, c)) out.push_back({f, c, k});
+    return out;
+  }
+
+  // A 2x2 grid: two U-patches and two V-patches at distinct positions, all four hinges
+  // holding (Claims 1 and 2). Tries big cylinders and middle slices first.
+  bool seed() {
+    const std::vector<Candidate> us = candidates(Family::U), vs = candidates(Family::V);
+    const size_t words = (us.size() + 63) / 64;
+    std::vector<std::vector<uint64_t>> holding(vs.size(), std::vector<uint64_t>(words, 0));
+    for (size_t q = 0; q < vs.size(); ++q) {
+      for (size_t p = 0; p < us.size(); ++p) {
+        if (table_.holds(us[p].cylinder, us[p].slice, vs[q].cylinder, vs[q].slice))
+          holding[q][p / 64] |= uint64_t{1} << (p % 64);
+      }
+    }
+    for (size_t q1 = 0; q1 < vs.size(); ++q1) {
+      for (size_t q2 = q1 + 1; q2 < vs.size(); ++q2) {
+        if (vs[q1].slice == vs[q2].slice) continue;
+        int first = -1;
+        for (size_t w = 0; w < words; ++w) {
+          for (uint64_t bits = holding[q1][w] & holding[q2][w]; bits; bits &= bits - 1) {
+            const int p = static_cast<int>(64 * w + __builtin_ctzll(bits));
+            if (first < 0) {
+              first = p;
+            } else if (us[p].slice != us[first].slice) {
+              for (const Candidate& c : {us[first], us[p], vs[q1], vs[q2]}) place(c);
+              return true;
+            }
+          }
+        }
+      }
+    }
+    return false;
+  }
+
+  // A patch for cylinder c where it is held by two placed patches; false if nowhere.
+  bool attach(Family f, int c) {
+    for (int k : slicesMiddleOut(f, c)) {
+      const Candidate cand{f, c, k};
+      if (!placed(cand) && pins(cand) >= 2) {
+        place(cand);
+        return true;
+      }
+    }
+    return false;
+  }
+
+  // A support patch: held by two placed patches, and reaching as many uncovered cylinders
+  // as possible, so they can be attached next.
+  bool support(const std::vector<std::pair<Family, int>>& uncovered) {
+    Candidate best;
+    int bestScore = 0;
+    for (Family f : {Family::U, Family::V}) {
+      for (const Candidate& cand : candidates(f)) {
+        if (placed(cand) || pins(cand) < 2) continue;
+        int score = 0;
+        for (const auto& [g, c] : uncovered) {
+          if (g == f) continue;
+          for (int k : slicesMiddleOut(g, c)) {
+            if (holds(cand, {g, c, k, 0})) {
+              ++score;
+              break;
+            }
+          }
+        }
+        if (score > bestScore) {
+          bestScore = score;
+          best = cand;
+        }
+      }
+    }
+    if (bestScore == 0) return false;
+    place(best);
+    return true;
+  }
+
+  // Fig. 16b: extra patches in long cylinders, each held by two patches of the other family.
+  void densify(double maxSpacing) {
+    for (Family f : {Family::U, Family::V}) {
+      const SliceSet& set = f == Family::U ? u_ : v_;
+      for (int c = 0; c < static_cast<int>(cylinders(f).size()); ++c) {
+        if (!covered(f, c)) continue;
+        while (true) {
+          // The slice farthest from this cylinder's patches that can be held.
+          int bestSlice = -1;
+          double bestGap = maxSpacing;
+          for (int k : slicesMiddleOut(f, c)) {
+            double gap = HUGE_VAL;
+            for (const ScaffoldPatch& p : scaffold.patches)
+              if (p.family == f && p.cylinder == c)
+                gap = std::min(gap, std::fabs(p.position - set.slices[k].position));
+            if (gap > bestGap && pins({f, c, k}) >= 2) {
+              bestGap = gap;
+              bestSlice = k;
+            }
+          }
+          if (bestSlice < 0) break;
+          place({f, c, bestSlice});
+        }
+      }
+    }
+  }
+
+ private:
+  const SliceSet& u_;
+  const SliceSet& v_;
+  const std::vector<Cylinder>& cu_;
+  const std::vector<Cylinder>& cv_;
+  const HingeTable& table_;
+
+  bool holds(const Candidate& p, const Candidate& q) const {
+    return holds(p, ScaffoldPatch{q.family, q.cylinder, q.slice, 0});
+  }
+};
+
+}  // namespace
+
+std::string patchId(const Scaffold& scaffold, int patch) {
+  const Family f = scaffold.patches[patch].family;
+  int number = 0;
+  for (int k = 0; k < patch; ++k) number += scaffold.patches[k].family == f ? 1 : 0;
+  return (f == Family::U ? "U" : "V") + std::to_string(number);
+}
+
+Scaffold stabilize(const SliceSet& u, const SliceSet& v, const std::vector<Cylinder>& uCylinders,
+                   const std::vector<Cylinder>& vCylinders, const HingeTable& table,
+                   const StabilizeOptions& options) {
+  Builder b(u, v, uCylinders, vCylinders, table);
+  std::vector<std::pair<Family, int>> required;
+  for (Family f : {Family::U, Family::V}) {
+    const bool needed =
+        options.scheme == Scheme::Both || (f == Family::U) == (options.scheme == Scheme::DominantU);
+    if (!needed) continue;
+    std::vector<int> order(b.cylinders(f).size());
+    for (size_t c = 0; c < order.size(); ++c) order[c] = static_cast<int>(c);
+    std::stable_sort(order.begin(), order.end(),
+                     [&](int x, int y) { return b.volume(f, x) > b.volume(f, y); });
+    for (int c : order) required.push_back({f, c});
+  }
+  if (b.seed()) {
+    while (true) {
+      std::vector<std::pair<Family, int>> uncovered;
+      for (const auto& [f, c] : required)
+        if (!b.covered(f, c)) uncovered.push_back({f, c});
+      if (uncovered.empty()) break;
+      bool progress = false;
+      for (const auto& [f, c] : uncovered) progress = b.attach(f, c) || progress;
+      if (!progress && !b.support(uncovered)) break;
+    }
+    if (options.maxSpacing > 0) b.densify(options.maxSpacing);
+  }
+  Scaffold s = std::move(b.scaffold);
+  for (const auto& [f, c] : required) {
+    const bool has = std::any_of(s.patches.begin(), s.patches.end(),
+                                 [&](const ScaffoldPatch& p) { return p.family == f && p.cylinder == c; });
+    if (!has) (f == Family::U ? s.uncoveredU : s.uncoveredV).push_back(c);
+  }
+  findHinges(s, table);
+  return s;
+}
+
+void findHinges(Scaffold& scaffold, const HingeTable& table) {
+  scaffold.hinges.clear();
+  const auto& ps = scaffold.patches;
+  for (int a = 0; a < static_cast<int>(ps.size()); ++a) {
+    if (ps[a].family != Family::U) continue;
+    for (int b = 0; b < static_cast<int>(ps.size()); ++b) {
+      if (ps[b].family != Family::V) continue;
+      for (const Interval& w : table.segments(ps[a].cylinder, ps[a].slice, ps[b].cylinder, ps[b].slice)) {
+        const bool holds = table.holds(ps[a].cylinder, ps[a].slice, ps[b].cylinder, ps[b].slice, w);
+        scaffold.hinges.push_back({a, b, w, holds});
+      }
+    }
+  }
+}
+
+}  // namespace sliceform

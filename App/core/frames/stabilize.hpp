@@ -1,0 +1,35 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// Stabilization (§4.2): chooses patches so that the scaffold is stable and every cylinder
+// that needs one gets a patch.
+//
+// Decision (deviation from Alg. 1/2, written down in docs/decisions.md): the paper chains
+// stable frame sets through shared frames (Def. 12), but two stable 2x2 sets sharing one
+// patch still swing against each other (nullity 2). We grow one rigid scaffold instead:
+// start from a 2x2 grid (Claims 1 and 2), and add a patch only where it hinges, with
+// hinges that hold, on at least two patches of the other family at different positions.
+// Such a patch cannot move but with the fold, so the scaffold stays stable by induction;
+// support patches (the paper's alpha-supports) are added where a needed cylinder cannot
+// reach two patches yet. The certificate checks the result independently.
+#pragma once
+
+#include <vector>
+
+#include "cylinders/gca.hpp"
+#include "frames/hinge_table.hpp"
+#include "frames/scaffold.hpp"
+
+namespace sliceform {
+
+struct StabilizeOptions {
+  Scheme scheme = Scheme::Both;
+  double maxSpacing = 0;  // mm; > 0 adds patches in long cylinders (Fig. 16b), 0 = off
+};
+
+Scaffold stabilize(const SliceSet& u, const SliceSet& v, const std::vector<Cylinder>& uCylinders,
+                   const std::vector<Cylinder>& vCylinders, const HingeTable& table,
+                   const StabilizeOptions& options);
+
+// Every hinge segment between the scaffold's U- and V-patches, marked holding or not.
+void findHinges(Scaffold& scaffold, const HingeTable& table);
+
+}  // namespace sliceform
