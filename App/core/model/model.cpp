@@ -3,6 +3,7 @@
 
 #include <BRepBndLib.hxx>
 #include <BRepBuilderAPI_MakeSolid.hxx>
+#include <BRepLib.hxx>
 #include <BRepMesh_IncrementalMesh.hxx>
 #include <BRepTools.hxx>
 #include <BRep_Builder.hxx>
@@ -10,17 +11,22 @@
 #include <Bnd_Box.hxx>
 #include <IFSelect_ReturnStatus.hxx>
 #include <IGESControl_Reader.hxx>
+#include <Poly_PolygonOnTriangulation.hxx>
 #include <Poly_Triangulation.hxx>
+#include <Precision.hxx>
 #include <RWObj.hxx>
 #include <RWStl.hxx>
 #include <STEPControl_Reader.hxx>
 #include <TopExp_Explorer.hxx>
+#include <TopTools_IndexedMapOfShape.hxx>
 #include <TopoDS.hxx>
 #include <TopoDS_Compound.hxx>
+#include <TopoDS_Edge.hxx>
 
 #include <algorithm>
 #include <cctype>
 #include <filesystem>
+#include <map>
 
 #include "support/error.hpp"
 #include "support/occt_guard.hpp"
@@ -93,8 +99,12 @@ TopoDS_Shape solidsOf(const TopoDS_Shape& shape, const std::string& source) {
   BRep_Builder builder;
   builder.MakeCompound(solids);
   int count = 0;
-  for (TopExp_Explorer it(shape, TopAbs_SOLID); it.More(); it.Next(), ++count)
+  for (TopExp_Explorer it(shape, TopAbs_SOLID); it.More(); it.Next()) {
+    // A solid without faces encloses nothing (and Booleans take it for an infinite solid).
+    if (!TopExp_Explorer(it.Current(), TopAbs_FACE).More()) continue;
     builder.Add(solids, it.Current());
+    ++count;
+  }
   for (TopExp_Explorer it(shape, TopAbs_SHELL, TopAbs_SOLID); it.More(); it.Next()) {
     if (!BRep_Tool::IsClosed(it.Current())) continue;
     BRepBuilderAPI_MakeSolid maker(TopoDS::Shell(it.Current()));
@@ -112,12 +122,24 @@ TopoDS_Shape solidsOf(const TopoDS_Shape& shape, const std::string& source) {
   return solids;
 }
 
-// The triangulation OCCT attaches to each face, gathered into one welded mesh with the
-// triangles turned to face outwards.
-Mesh triangulate(const TopoDS_Shape& shape, double deflection) {
-  BRepMesh_IncrementalMesh mesher(shape, deflection, Standard_False, 0.35, Standard_True);
+// The triangulation OCCT attached to each face of `solid`, gathered into one welded mesh
+// with the triangles turned to face outwards.
+Mesh gatherTriangulation(const TopoDS_Shape& solid) {
   Mesh mesh;
-  for (TopExp_Explorer it(shape, TopAbs_FACE); it.More(); it.Next()) {
+  // Nodes on a shared BRep edge are joined through the edge's polygon on each face's
+  // triangulation (node k of edge E is one point, whatever the face). Welding by exact
+  // coordinates alone left cracks: each face's nodes are moved by that face's location, and
+  // the same point moved by two different transformations can differ in the last bits
+  // (valid closed solids such as occ/Bottom.brep or CrankArm.brep were refused as "not
+  // closed").
+  TopTools_IndexedMapOfShape edges;                   // same TShape and location: same edge
+  std::map<std::pair<int, int>, uint32_t> edgeNodes;  // (edge, node k) -> first vertex seen
+  std::vector<uint32_t> parent;                       // union-find over the mesh vertices
+  auto find = [&](uint32_t x) {
+    while (parent[x] != x) x = parent[x] = parent[parent[x]];
+    return x;
+  };
+  for (TopExp_Explorer it(solid, TopAbs_FACE); it.More(); it.Next()) {
     const TopoDS_Face& face = TopoDS::Face(it.Current());
     TopLoc_Location location;
     Handle(Poly_Triangulation) poly = BRep_Tool::Triangulation(face, location);
@@ -127,6 +149,7 @@ Mesh triangulate(const TopoDS_Shape& shape, double deflection) {
     for (Standard_Integer i = 1; i <= poly->NbNodes(); ++i) {
       const gp_Pnt p = poly->Node(i).Transformed(trsf);
       mesh.vertices.push_back({p.X(), p.Y(), p.Z()});
+      parent.push_back(static_cast<uint32_t>(parent.size()));
     }
     const bool reversed = face.Orientation() == TopAbs_REVERSED;
     for (Standard_Integer i = 1; i <= poly->NbTriangles(); ++i) {
@@ -135,8 +158,42 @@ Mesh triangulate(const TopoDS_Shape& shape, double deflection) {
       if (reversed) std::swap(b, c);
       mesh.triangles.push_back({base + a - 1, base + b - 1, base + c - 1});
     }
+    for (TopExp_Explorer e(face, TopAbs_EDGE); e.More(); e.Next()) {
+      const TopoDS_Edge& edge = TopoDS::Edge(e.Current());
+      const Handle(Poly_PolygonOnTriangulation)& polygon =
+          BRep_Tool::PolygonOnTriangulation(edge, poly, location);
+      if (polygon.IsNull()) continue;
+      const int id = edges.Add(edge);
+      const double tolerance = BRep_Tool::Tolerance(edge);
+      for (Standard_Integer k = 1; k <= polygon->NbNodes(); ++k) {
+        const Standard_Integer node = polygon->Node(k);
+        if (node < 1 || node > poly->NbNodes()) continue;
+        const uint32_t v = base + node - 1;
+        const auto [first, added] = edgeNodes.emplace(std::make_pair(id, k), v);
+        // Join only nodes that coincide, should two faces ever order an edge's nodes apart.
+        if (!added && norm(mesh.vertices[first->second] - mesh.vertices[v]) <= tolerance)
+          parent[find(v)] = find(first->second);
+      }
+    }
   }
+  for (auto& t : mesh.triangles)
+    for (uint32_t& v : t) v = find(v);
   return weldExact(mesh);
+}
+
+// The triangulation of every solid, each welded on its own: solids of an assembly that
+// touch share points, and welding them into one another turned their common edges into
+// edges of four triangles, so closed solids (occ/Motor-c.brep) were refused as non-manifold.
+Mesh triangulate(const TopoDS_Shape& shape, double deflection) {
+  BRepMesh_IncrementalMesh mesher(shape, deflection, Standard_False, 0.35, Standard_True);
+  Mesh mesh;
+  for (TopExp_Explorer it(shape, TopAbs_SOLID); it.More(); it.Next()) {
+    const Mesh part = gatherTriangulation(it.Current());
+    const auto base = static_cast<uint32_t>(mesh.vertices.size());
+    mesh.vertices.insert(mesh.vertices.end(), part.vertices.begin(), part.vertices.end());
+    for (const auto& t : part.triangles) mesh.triangles.push_back({base + t[0], base + t[1], base + t[2]});
+  }
+  return mesh;
 }
 
 }  // namespace
@@ -162,6 +219,13 @@ Model modelFromShape(const TopoDS_Shape& shape, const std::string& source, doubl
   model.source = source;
   model.kind = SourceKind::Brep;
   model.shape = solidsOf(shape, source);
+  // Make every edge's tolerance cover the distance between its 3D curve and its curves on
+  // the faces. Imported files can understate it (step/linkrods.step: up to 4e-4 mm against
+  // 1e-7), and OCCT's Booleans then drop parts of a section without any error, so the exact
+  // slicer returned wrong areas. Like the triangulation below, this updates the shape's
+  // edges in place.
+  occtGuard("checking the shape's edges",
+            [&] { BRepLib::SameParameter(model.shape, Precision::Confusion(), Standard_True); });
   Bnd_Box box;
   occtGuard("measuring the shape", [&] { BRepBndLib::AddOptimal(model.shape, box, Standard_False); });
   if (box.IsVoid()) throw Error(ErrorKind::BadInput, source + ": the shape has no extent");

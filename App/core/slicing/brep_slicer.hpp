@@ -15,7 +15,8 @@ namespace sliceform {
 struct ExactSlice {
   double position = 0;
   TopoDS_Shape faces;  // compound of planar faces in 3D, null where the plane misses
-  double area = 0;     // of the faces, mm², from OCCT's surface integration
+  double area = 0;     // of the faces, mm², from OCCT's surface integration (where solids
+                       // overlap, their faces overlap and count twice)
   Region2d region;     // the faces' boundaries polygonised within `deflection`
 };
 

@@ -1,0 +1,165 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// Arrangement building blocks: the rigidity certificate, Reeb graphs of slice sets and
+// their simplification, and the cylinder approximation's dynamic programme.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "cylinders/gca.hpp"
+#include "reeb/reeb_graph.hpp"
+#include "verify/certificate.hpp"
+
+namespace sliceform {
+namespace {
+
+Region2d rect(double x0, double y0, double x1, double y1) {
+  return Region2d::fromLoops({{{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}}});
+}
+
+// A grid of nu U-patches and nv V-patches with every U hinged to every V.
+std::pair<std::vector<BarPatch>, std::vector<PinHinge>> grid(int nu, int nv) {
+  std::vector<BarPatch> patches;
+  for (int i = 0; i < nu; ++i) patches.push_back({Family::U, 10.0 * i});
+  for (int j = 0; j < nv; ++j) patches.push_back({Family::V, 7.0 * j + 3});
+  std::vector<PinHinge> hinges;
+  for (int i = 0; i < nu; ++i)
+    for (int j = 0; j < nv; ++j) hinges.push_back({i, nu + j});
+  return {patches, hinges};
+}
+
+TEST(Certificate, TwoByTwoGridFoldsAndNothingElse) {
+  const auto [patches, hinges] = grid(2, 2);
+  const Certificate c = certify(patches, hinges);
+  EXPECT_TRUE(c.stable) << c.reason;
+  EXPECT_EQ(c.nullity, 1);
+  EXPECT_EQ(c.pins, 4);
+}
+
+TEST(Certificate, LargerGridsStayStable) {
+  const auto [patches, hinges] = grid(5, 3);
+  EXPECT_EQ(certify(patches, hinges).nullity, 1);
+}
+
+TEST(Certificate, PatchHingedOnceWobbles) {
+  auto [patches, hinges] = grid(2, 2);
+  patches.push_back({Family::U, 25});
+  hinges.push_back({4, 2});  // the new U-patch hangs on one V-patch: it can swing
+  const Certificate c = certify(patches, hinges);
+  EXPECT_FALSE(c.stable);
+  EXPECT_EQ(c.nullity, 2);
+  EXPECT_NE(c.reason.find("wobbles"), std::string::npos);
+}
+
+TEST(Certificate, TwoSeparateGridsAreNotOneScaffold) {
+  auto [patches, hinges] = grid(2, 2);
+  for (int k = 0; k < 4; ++k) patches.push_back({patches[k].family, patches[k].position + 100});
+  for (int k = 0; k < 4; ++k) hinges.push_back({hinges[k].a + 4, hinges[k].b + 4});
+  EXPECT_EQ(certify(patches, hinges).nullity, 1 + 3 + 1);  // the second grid moves freely and folds
+}
+
+TEST(Certificate, SeveralHingesOfOnePairAreOnePin) {
+  auto [patches, hinges] = grid(2, 2);
+  hinges.push_back(hinges[0]);
+  const Certificate c = certify(patches, hinges);
+  EXPECT_EQ(c.pins, 4);
+  EXPECT_EQ(c.nullity, 1);
+}
+
+TEST(Certificate, RefusesHingeWithinOneFamily) {
+  const Certificate c = certify({{Family::U, 0}, {Family::U, 5}}, {{0, 1}});
+  EXPECT_FALSE(c.stable);
+  EXPECT_NE(c.reason.find("same family"), std::string::npos);
+}
+
+// A slice set of a "Y": one trunk piece that splits into two branches; the right one is
+// `width` wide and reaches `above` higher than the trunk.
+SliceSet ySlices(int trunk, int branch, double width, double above = 0) {
+  SliceSet set;
+  set.interval = 1;
+  for (int i = 0; i < trunk; ++i) set.slices.push_back({double(i), rect(0, 0, 10, 10)});
+  for (int i = 0; i < branch; ++i)
+    set.slices.push_back({double(trunk + i), rect(0, 0, 4, 10).unite(rect(10 - width, 0, 10, 10 + above))});
+  return set;
+}
+
+TEST(ReebGraph, SplitGivesThreeEdgesAtOneVertex) {
+  const ReebGraph g = buildReebGraph(ySlices(5, 4, 4));
+  ASSERT_EQ(g.edges.size(), 3u);
+  EXPECT_EQ(g.vertexCount, 4);  // trunk start, split, two branch ends
+  const ReebEdge& trunk = g.edges[0];
+  EXPECT_EQ(trunk.patches.size(), 5u);
+  EXPECT_EQ(g.outgoing(trunk.head).size(), 2u);
+  EXPECT_DOUBLE_EQ(trunk.weight(), 5 * 100.0);
+}
+
+TEST(ReebGraph, SmallBranchIsAbsorbedAndChainJoins) {
+  // Branches of 40 and 2.4 mm² a slice; the thin one weighs 9.6 / 500 of the trunk.
+  ReebGraph g = buildReebGraph(ySlices(5, 4, 0.2, 2));
+  simplifyReebGraph(g, 0.03);
+  ASSERT_EQ(g.edges.size(), 1u);  // thin branch absorbed, then trunk and big branch joined
+  const ReebEdge& e = g.edges[0];
+  EXPECT_EQ(e.patches.size(), 9u);
+  // The thin branch's silhouette survives on the trunk's last patch (a right merge): the
+  // part of it above the trunk, 0.2 x 2, is added.
+  EXPECT_NEAR(e.patches[4].area(), 100 + 0.4, 1e-6);
+  EXPECT_NEAR(e.patches.back().area(), 40, 1e-6);
+}
+
+TEST(ReebGraph, LargeBranchesStay) {
+  ReebGraph g = buildReebGraph(ySlices(5, 4, 4));
+  simplifyReebGraph(g, 0.03);
+  EXPECT_EQ(g.edges.size(), 3u);
+}
+
+TEST(ReebGraph, RingGivesACycle) {
+  // A ring seen edge-on: one piece, then two, then one again.
+  SliceSet set;
+  for (int i = 0; i < 3; ++i) set.slices.push_back({double(i), rect(0, 0, 10, 10)});
+  for (int i = 3; i < 6; ++i) set.slices.push_back({double(i), rect(0, 0, 3, 10).unite(rect(7, 0, 10, 10))});
+  for (int i = 6; i < 9; ++i) set.slices.push_back({double(i), rect(0, 0, 10, 10)});
+  const ReebGraph g = buildReebGraph(set);
+  EXPECT_EQ(g.edges.size(), 4u);
+  EXPECT_EQ(g.vertexCount, 4);  // start, split, merge, end: 4 edges on 4 vertices has one cycle
+}
+
+TEST(Gca, IdenticalPatchesMakeOneCylinder) {
+  const std::vector<Region2d> patches(6, rect(0, 0, 5, 5));
+  const auto groups = partitionPatches(patches, 1.0, 0.0);
+  ASSERT_EQ(groups.size(), 1u);
+  EXPECT_EQ(groups[0], std::make_pair(0, 5));
+}
+
+TEST(Gca, ErrorIsEquationOne) {
+  // Squares of side 2, 4: union area 16, error ds * ((16 - 4) + (16 - 16)).
+  const std::vector<Region2d> patches{rect(0, 0, 2, 2), rect(0, 0, 4, 4)};
+  EXPECT_DOUBLE_EQ(cylinderError(patches, 0, 1, 0.5), 0.5 * 12);
+}
+
+TEST(Gca, TwoSizesSplitWhereTheyChange) {
+  std::vector<Region2d> patches(4, rect(0, 0, 2, 2));
+  for (int k = 0; k < 4; ++k) patches.push_back(rect(0, 0, 4, 4));
+  const auto groups = partitionPatches(patches, 1.0, 0.01);
+  ASSERT_EQ(groups.size(), 2u);
+  EXPECT_EQ(groups[0], std::make_pair(0, 3));
+  EXPECT_EQ(groups[1], std::make_pair(4, 7));
+}
+
+TEST(Gca, LooserTauMeansFewerCylinders) {
+  // A cone: areas grow steadily, so the count falls as tauA grows.
+  std::vector<Region2d> patches;
+  for (int k = 1; k <= 40; ++k) patches.push_back(rect(0, 0, k, k));
+  size_t previous = 1000;
+  for (double tau : {0.01, 0.1, 0.5}) {
+    const auto groups = partitionPatches(patches, 1.0, tau);
+    EXPECT_LE(groups.size(), previous);
+    previous = groups.size();
+    double volume = 0, error = 0;
+    for (const Region2d& p : patches) volume += p.area();
+    for (const auto& [i, j] : groups) error += cylinderError(patches, i, j, 1.0);
+    EXPECT_LE(error, tau * volume + 1e-6);
+  }
+  EXPECT_LT(previous, 10u);
+}
+
+}  // namespace
+}  // namespace sliceform

@@ -1,0 +1,257 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// Exact BRep slicer: analytic section areas, true circles, polygonised regions, mesh agreement.
+#include <gtest/gtest.h>
+
+#include <BRepAdaptor_Curve.hxx>
+#include <BRepGProp.hxx>
+#include <BRepPrimAPI_MakeBox.hxx>
+#include <BRepPrimAPI_MakeCylinder.hxx>
+#include <BRep_Builder.hxx>
+#include <GCPnts_AbscissaPoint.hxx>
+#include <GProp_GProps.hxx>
+#include <TopExp_Explorer.hxx>
+#include <TopoDS.hxx>
+#include <TopoDS_Compound.hxx>
+#include <TopoDS_Solid.hxx>
+
+#include <cmath>
+
+#include "model/model.hpp"
+#include "slicing/brep_slicer.hpp"
+#include "slicing/mesh_slicer.hpp"
+#include "support/error.hpp"
+#include "test_support.hpp"
+
+namespace sliceform {
+namespace {
+
+constexpr double kRel = 1e-9;
+
+// Total length of the section's edges, from OCCT.
+double perimeter(const TopoDS_Shape& faces) {
+  GProp_GProps props;
+  BRepGProp::LinearProperties(faces, props);
+  return props.Mass();
+}
+
+// The polygonised region is within `deflection` of the exact boundary everywhere.
+void expectRegionMatches(const ExactSlice& s, double deflection) {
+  ASSERT_FALSE(s.faces.IsNull());
+  const double bound = perimeter(s.faces) * deflection + 1e-6;
+  EXPECT_NEAR(s.region.area(), s.area, bound) << "at " << s.position;
+  EXPECT_GT(s.region.area(), 0.0);
+}
+
+// Total length of the section edges whose geometry is of `type`.
+double lengthOf(const TopoDS_Shape& shape, GeomAbs_CurveType type) {
+  double length = 0;
+  for (TopExp_Explorer it(shape, TopAbs_EDGE); it.More(); it.Next()) {
+    const BRepAdaptor_Curve curve(TopoDS::Edge(it.Current()));
+    if (curve.GetType() == type) length += GCPnts_AbscissaPoint::Length(curve);
+  }
+  return length;
+}
+
+TEST(BrepSlicer, SphereSectionsAreExactDiscs) {
+  const double R = 10, defl = 0.005;
+  const std::vector<double> hs{-9.9, -6, -1.25, 0, 4, 8.5};
+  for (const Vec3& n : {Vec3{0, 0, 1}, Vec3{0, 1, 0}, Vec3{2, -1, 3}}) {
+    const std::vector<ExactSlice> slices = sliceBrep(test::makeSphere(R), makeSliceFrame(n), hs, defl);
+    ASSERT_EQ(slices.size(), hs.size());
+    for (const ExactSlice& s : slices) {
+      const double rho = std::sqrt(R * R - s.position * s.position);
+      EXPECT_NEAR(s.area, M_PI * rho * rho, kRel * M_PI * rho * rho) << "h = " << s.position;
+      expectRegionMatches(s, defl);
+      EXPECT_LE(s.region.area(), s.area + 1e-6);  // chords lie inside the circle
+      // Circles stay circles: the whole boundary is circle edges of radius rho.
+      EXPECT_NEAR(lengthOf(s.faces, GeomAbs_Circle), 2 * M_PI * rho, kRel * 2 * M_PI * rho);
+      EXPECT_NEAR(perimeter(s.faces), 2 * M_PI * rho, kRel * 2 * M_PI * rho);
+      for (TopExp_Explorer it(s.faces, TopAbs_EDGE); it.More(); it.Next())
+        EXPECT_NEAR(BRepAdaptor_Curve(TopoDS::Edge(it.Current())).Circle().Radius(), rho, 1e-9 * R);
+    }
+  }
+}
+
+TEST(BrepSlicer, TorusSectionsAlongAxis) {
+  const double R = 10, r = 3, defl = 0.005;
+  const std::vector<double> hs{-2.9, -1.5, 0.3, 2, 2.75};
+  const std::vector<ExactSlice> slices =
+      sliceBrep(test::makeTorus(R, r), makeSliceFrame({0, 0, 1}), hs, defl);
+  for (const ExactSlice& s : slices) {
+    const double w = std::sqrt(r * r - s.position * s.position);
+    const double exact = 4 * M_PI * R * w;
+    EXPECT_NEAR(s.area, exact, kRel * exact) << "h = " << s.position;
+    expectRegionMatches(s, defl);
+    EXPECT_EQ(s.region.holeCount(), 1);
+    EXPECT_EQ(s.region.components().size(), 1u);
+    // Two circles, radii R - w and R + w, and nothing else.
+    EXPECT_NEAR(lengthOf(s.faces, GeomAbs_Circle), 4 * M_PI * R, kRel * 4 * M_PI * R);
+    EXPECT_NEAR(perimeter(s.faces), 4 * M_PI * R, kRel * 4 * M_PI * R);
+  }
+}
+
+TEST(BrepSlicer, HollowSphereSectionsAreRings) {
+  const double R = 10, r = 7, defl = 0.005;
+  const std::vector<double> hs{-8.5, -4, 0.5, 6.9, 7.5};
+  const std::vector<ExactSlice> slices =
+      sliceBrep(test::makeHollowSphere(R, r), makeSliceFrame({1, 1, 0}, {0, 0, 1}), hs, defl);
+  for (const ExactSlice& s : slices) {
+    const double h2 = s.position * s.position;
+    const bool throughVoid = h2 < r * r;
+    const double exact = M_PI * (R * R - h2) - (throughVoid ? M_PI * (r * r - h2) : 0);
+    EXPECT_NEAR(s.area, exact, kRel * exact) << "h = " << s.position;
+    expectRegionMatches(s, defl);
+    EXPECT_EQ(s.region.holeCount(), throughVoid ? 1 : 0);
+  }
+}
+
+// Box 40 x 30 x 20 with two vertical through holes of radius 4 centred at (10, 15) and
+// (28, 12).
+const double kA = 40, kB = 30, kC = 20, kR = 4;
+const std::vector<test::Hole> kHoles{{10, 15, kR}, {28, 12, kR}};
+
+TopoDS_Shape holedBox() {
+  return test::makeBoxWithHoles(kA, kB, kC, kHoles);
+}
+
+// Half-width of the strip a hole cuts from the plane at distance `offset` from its axis.
+double halfChord(double offset) {
+  return std::fabs(offset) < kR ? std::sqrt(kR * kR - offset * offset) : 0;
+}
+
+TEST(BrepSlicer, BoxWithHolesAlongHoleAxis) {
+  const double defl = 0.002;
+  const std::vector<double> zs{0.5, 7, 13.3, 19.5};
+  const std::vector<ExactSlice> slices = sliceBrep(holedBox(), makeSliceFrame({0, 0, 1}), zs, defl);
+  const double exact = kA * kB - 2 * M_PI * kR * kR;
+  for (const ExactSlice& s : slices) {
+    EXPECT_NEAR(s.area, exact, kRel * exact) << "z = " << s.position;
+    expectRegionMatches(s, defl);
+    EXPECT_EQ(s.region.holeCount(), 2);
+    // The holes are circles, the rectangle lines.
+    EXPECT_NEAR(lengthOf(s.faces, GeomAbs_Circle), 2 * 2 * M_PI * kR, kRel * 4 * M_PI * kR);
+    EXPECT_NEAR(lengthOf(s.faces, GeomAbs_Line), 2 * (kA + kB), kRel * 2 * (kA + kB));
+  }
+}
+
+TEST(BrepSlicer, BoxWithHolesAcrossHoles) {
+  const double defl = 0.002;
+  // Planes x = const: the rectangle b x c minus a strip of width 2 * halfChord per hole.
+  const std::vector<double> xs{3, 7.5, 10, 13.9, 25, 30, 35};
+  for (const ExactSlice& s : sliceBrep(holedBox(), makeSliceFrame({1, 0, 0}), xs, defl)) {
+    double strips = 0;
+    for (const auto& h : kHoles) strips += 2 * halfChord(s.position - h.x) * kC;
+    const double exact = kB * kC - strips;
+    EXPECT_NEAR(s.area, exact, kRel * exact) << "x = " << s.position;
+    expectRegionMatches(s, defl);
+    // Each hole the plane meets splits the rectangle once more.
+    size_t pieces = 1;
+    for (const auto& h : kHoles) pieces += halfChord(s.position - h.x) > 0;
+    EXPECT_EQ(s.region.components().size(), pieces) << "x = " << s.position;
+  }
+  // Planes y = const meet both holes at once near y = 13.5.
+  const std::vector<double> ys{9, 13.5, 18.5};
+  for (const ExactSlice& s : sliceBrep(holedBox(), makeSliceFrame({0, 1, 0}), ys, defl)) {
+    double strips = 0;
+    for (const auto& h : kHoles) strips += 2 * halfChord(s.position - h.y) * kC;
+    EXPECT_NEAR(s.area, kA * kC - strips, kRel * kA * kC) << "y = " << s.position;
+    expectRegionMatches(s, defl);
+  }
+}
+
+TEST(BrepSlicer, MeshAndExactSlicersAgree) {
+  // The triangulation lies within d of the surface, so its sections lie between the exact
+  // sections of the solid shrunk by d and grown by d (built here analytically).
+  const double d = 0.01;
+  struct Case {
+    const char* name;
+    TopoDS_Shape shape, shrunk, grown;
+    Vec3 normal;
+  } cases[] = {
+      {"torus", test::makeTorus(10, 3), test::makeTorus(10, 3 - d), test::makeTorus(10, 3 + d), {0, 0, 1}},
+      {"torus side",
+       test::makeTorus(10, 3),
+       test::makeTorus(10, 3 - d),
+       test::makeTorus(10, 3 + d),
+       {1, 0, 0}},
+      {"holed box",
+       holedBox(),
+       test::makeBoxWithHoles(kA, kB, kC, kHoles, -d),
+       test::makeBoxWithHoles(kA, kB, kC, kHoles, d),
+       {0, 0, 1}},
+      {"holed box across",
+       holedBox(),
+       test::makeBoxWithHoles(kA, kB, kC, kHoles, -d),
+       test::makeBoxWithHoles(kA, kB, kC, kHoles, d),
+       {1, 0.2, 0}},
+      {"hollow sphere",
+       test::makeHollowSphere(10, 6),
+       test::makeHollowSphere(10 - d, 6 + d),
+       test::makeHollowSphere(10 + d, 6 - d),
+       {0, 1, 1}}};
+  for (const Case& c : cases) {
+    SCOPED_TRACE(c.name);
+    const Model model = modelFromShape(c.shape, c.name, d);
+    const SliceFrame frame = makeSliceFrame(c.normal);
+    const Interval range = model.mesh.extent(frame.normal);
+    const std::vector<double> positions = uniformPositions(range.lo, range.hi, 7);
+    const SliceSet mesh = sliceMesh(model.mesh, frame, positions);
+    const std::vector<ExactSlice> exact = sliceBrep(model.shape, frame, positions, d / 10);
+    const std::vector<ExactSlice> lo = sliceBrep(c.shrunk, frame, positions, d / 10);
+    const std::vector<ExactSlice> hi = sliceBrep(c.grown, frame, positions, d / 10);
+    ASSERT_EQ(mesh.slices.size(), exact.size());
+    for (size_t i = 0; i < exact.size(); ++i) {
+      const double area = mesh.slices[i].region.area();
+      const double slack = test::gridTolerance(perimeter(hi[i].faces));
+      EXPECT_GE(area, lo[i].area - slack) << "at " << positions[i];
+      EXPECT_LE(area, hi[i].area + slack) << "at " << positions[i];
+      EXPECT_LT(lo[i].area, exact[i].area);
+      EXPECT_LT(exact[i].area, hi[i].area);
+      EXPECT_EQ(mesh.slices[i].region.holeCount(), exact[i].region.holeCount()) << "at " << positions[i];
+      EXPECT_EQ(mesh.slices[i].region.components().size(), exact[i].region.components().size());
+    }
+  }
+}
+
+TEST(BrepSlicer, CompoundsOfSolids) {
+  // Box [0,10]² x [0,6], a box beside it touching it along x = 10, a vertical cylinder of
+  // radius 2 piercing the first box at (3, 3), and an empty solid (no faces).
+  BRep_Builder builder;
+  TopoDS_Compound parts;
+  builder.MakeCompound(parts);
+  builder.Add(parts, BRepPrimAPI_MakeBox(10, 10, 6).Shape());
+  builder.Add(parts, BRepPrimAPI_MakeBox(gp_Pnt(10, 0, 0), 5, 10, 6).Shape());
+  builder.Add(parts, BRepPrimAPI_MakeCylinder(gp_Ax2(gp_Pnt(3, 3, -4), gp_Dir(0, 0, 1)), 2, 14).Shape());
+  TopoDS_Solid empty;
+  builder.MakeSolid(empty);
+  builder.Add(parts, empty);
+  const double disc = M_PI * 2 * 2;
+  const std::vector<ExactSlice> slices = sliceBrep(parts, makeSliceFrame({0, 0, 1}), {-2, 3, 8}, 0.001);
+  // Below and above the boxes only the cylinder is cut.
+  EXPECT_NEAR(slices[0].area, disc, kRel * disc);
+  EXPECT_NEAR(slices[2].area, disc, kRel * disc);
+  // Through the boxes: the faces of every solid, the cylinder's overlapping the first box's;
+  // the region is their union.
+  EXPECT_NEAR(slices[1].area, 150 + disc, kRel * 150);
+  EXPECT_NEAR(slices[1].region.area(), 150, perimeter(slices[1].faces) * 0.001);
+  EXPECT_EQ(slices[1].region.components().size(), 1u);
+}
+
+TEST(BrepSlicer, PlaneMissingTheSolidGivesNothing) {
+  const std::vector<ExactSlice> slices =
+      sliceBrep(test::makeSphere(10), makeSliceFrame({0, 0, 1}), {-12, 10.5, 25}, 0.01);
+  for (const ExactSlice& s : slices) {
+    EXPECT_TRUE(s.faces.IsNull()) << "at " << s.position;
+    EXPECT_EQ(s.area, 0.0);
+    EXPECT_TRUE(s.region.empty());
+  }
+  try {
+    sliceBrep(test::makeSphere(10), makeSliceFrame({0, 0, 1}), {0}, 0);
+    FAIL() << "zero deflection accepted";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.kind(), ErrorKind::BadParameter);
+  }
+}
+
+}  // namespace
+}  // namespace sliceform

@@ -1,0 +1,166 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// Every OCCT sample model (occt-misc): read, refuse cleanly or slice with both slicers.
+#include <gtest/gtest.h>
+
+#include <BRepGProp.hxx>
+#include <GProp_GProps.hxx>
+#include <TopExp_Explorer.hxx>
+
+#include <algorithm>
+#include <chrono>
+#include <filesystem>
+#include <iostream>
+#include <sstream>
+
+#include "model/model.hpp"
+#include "slicing/brep_slicer.hpp"
+#include "slicing/mesh_slicer.hpp"
+#include "support/error.hpp"
+
+namespace sliceform {
+namespace {
+
+namespace fs = std::filesystem;
+const std::string kData = SLICEFORM_OCCT_DATA_DIR;
+
+// The sample files, sorted; a single empty name (the test skips) if OCCT's data is missing.
+std::vector<std::string> sampleFiles() {
+  const std::pair<const char*, const char*> kinds[] = {
+      {"occ", ".brep"}, {"step", ".step"}, {"iges", ".iges"}, {"stl", ".stl"}};
+  std::vector<std::string> files;
+  for (const auto& [folder, ext] : kinds) {
+    std::error_code ec;
+    for (const auto& entry : fs::directory_iterator(fs::path(kData) / folder, ec))
+      if (entry.is_regular_file() && entry.path().extension() == ext) files.push_back(entry.path().string());
+  }
+  std::sort(files.begin(), files.end());
+  if (files.empty()) files.push_back("");
+  return files;
+}
+
+std::string testName(const testing::TestParamInfo<std::string>& info) {
+  if (info.param.empty()) return "no_data";
+  const fs::path p(info.param);
+  std::string name = p.parent_path().filename().string() + "_" + p.filename().string();
+  for (char& c : name)
+    if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
+  return name;
+}
+
+// Total length of the edges of `faces`.
+double perimeter(const TopoDS_Shape& faces) {
+  GProp_GProps props;
+  BRepGProp::LinearProperties(faces, props);
+  return props.Mass();
+}
+
+double msSince(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+}
+
+// The mesh and exact areas of a plane agree within `tolerance`. Where the section jumps
+// within the mesh deflection d of the plane (a face parallel to the plane, or tangent to
+// it), the two slicers may land on different sides of the jump: there both areas must lie
+// within the jump, as measured by both slicers at position -/+ d.
+void expectAgreement(const Model& model, const SliceFrame& frame, double position, double meshArea,
+                     double exactArea, double tolerance, double exactDeflection) {
+  if (std::fabs(meshArea - exactArea) <= tolerance) return;
+  const double d = model.meshDeflection;
+  const SliceSet around = sliceMesh(model.mesh, frame, {position - d, position + d});
+  const double below = around.slices[0].region.area(), above = around.slices[1].region.area();
+  if (std::fabs(below - above) <= tolerance) {
+    ADD_FAILURE() << "mesh area " << meshArea << " and exact area " << exactArea << " differ by more than "
+                  << tolerance << " at " << position << ", where the section does not jump";
+    return;
+  }
+  const std::vector<ExactSlice> exact =
+      sliceBrep(model.shape, frame, {position - d, position + d}, exactDeflection);
+  // Region areas: they unite overlapping solids, as the mesh slicer does.
+  const double exactBelow = exact[0].region.area(), exactAbove = exact[1].region.area();
+  const double lo = std::min({below, above, exactBelow, exactAbove});
+  const double hi = std::max({below, above, exactBelow, exactAbove});
+  std::cout << "[occt-misc] the section jumps from " << below << " to " << above << " mm2 (mesh; exact "
+            << exactBelow << " to " << exactAbove << ") within " << d << " mm of " << position << ": mesh "
+            << meshArea << ", exact " << exactArea << "\n";
+  EXPECT_GE(std::min(meshArea, exactArea), lo - tolerance) << "at " << position;
+  EXPECT_LE(std::max(meshArea, exactArea), hi + tolerance) << "at " << position;
+}
+
+class OcctSample : public testing::TestWithParam<std::string> {};
+
+TEST_P(OcctSample, ReadsAndSlicesOrRefusesCleanly) {
+  const std::string path = GetParam();
+  if (path.empty()) GTEST_SKIP() << kData << " holds no sample models";
+  const std::string name = fs::path(path).filename().string();
+
+  auto start = std::chrono::steady_clock::now();
+  Model model;
+  try {
+    model = readModel(path);
+    requireClosed(model);
+  } catch (const Error& e) {
+    // Not a solid, or an open mesh: refused with a message for the user.
+    EXPECT_EQ(e.kind(), ErrorKind::BadInput) << e.what();
+    EXPECT_STRNE(e.what(), "");
+    std::cout << "[occt-misc] " << name << ": refused (" << e.what() << ")\n";
+    RecordProperty("refused", e.what());
+    return;
+  }
+  const double readMs = msSince(start);
+  const bool brep = model.kind == SourceKind::Brep;
+  int solids = 0;
+  for (TopExp_Explorer it(model.shape, TopAbs_SOLID); it.More(); it.Next()) ++solids;
+  const int meshPlanes = 8, exactPlanes = 4;
+
+  double meshMs = 0, exactMs = 0;
+  std::ostringstream areas;
+  for (const Vec3& dir : {Vec3{1, 0, 0}, Vec3{0, 1, 0}}) {
+    const SliceFrame frame = makeSliceFrame(dir, {0, 0, 1});
+    const Interval range = model.mesh.extent(frame.normal);
+    start = std::chrono::steady_clock::now();
+    const SliceSet set = sliceMesh(model.mesh, frame, uniformPositions(range.lo, range.hi, meshPlanes));
+    meshMs += msSince(start);
+    for (const Slice& s : set.slices) EXPECT_GE(s.region.area(), 0.0) << "at " << s.position;
+    if (!brep) continue;
+
+    // Exact sections at four planes, compared with mesh sections at the same planes.
+    const std::vector<double> positions = uniformPositions(range.lo, range.hi, exactPlanes);
+    const double exactDeflection = std::max(1e-3, model.meshDeflection / 10);  // as the CLI does
+    start = std::chrono::steady_clock::now();
+    const std::vector<ExactSlice> exact = sliceBrep(model.shape, frame, positions, exactDeflection);
+    exactMs += msSince(start);
+    const SliceSet mesh = sliceMesh(model.mesh, frame, positions);
+    double largest = 0;
+    for (const ExactSlice& s : exact) largest = std::max(largest, s.area);
+    for (size_t i = 0; i < exact.size(); ++i) {
+      SCOPED_TRACE(dir.x == 1 ? "along x" : "along y");
+      // The mesh slicer unites overlapping solids; ExactSlice::area counts their overlap
+      // twice, its region does not. The region is within the polygon deflection of the faces.
+      const double m = mesh.slices[i].region.area(), x = exact[i].area, u = exact[i].region.area();
+      EXPECT_GE(x, 0.0);
+      const double polygonError =
+          exact[i].faces.IsNull() ? 0 : perimeter(exact[i].faces) * exactDeflection + 1e-6;
+      EXPECT_LE(u, x + polygonError) << "at " << positions[i];
+      if (solids == 1) {
+        EXPECT_NEAR(u, x, polygonError) << "at " << positions[i];
+      }
+      expectAgreement(model, frame, positions[i], m, u, 0.02 * largest + 1.0, exactDeflection);
+      areas << " " << m << "/" << x;
+    }
+  }
+  const double meshPerSlice = meshMs / (2 * meshPlanes);
+  const double exactPerSlice = brep ? exactMs / (2 * exactPlanes) : 0;
+  std::cout << "[occt-misc] " << name << ": " << model.mesh.triangles.size() << " triangles, read " << readMs
+            << " ms, mesh " << meshPerSlice << " ms/slice";
+  if (brep) std::cout << ", exact " << exactPerSlice << " ms/slice; mesh/exact areas" << areas.str();
+  std::cout << "\n";
+  RecordProperty("triangles", std::to_string(model.mesh.triangles.size()));
+  RecordProperty("read_ms", std::to_string(readMs));
+  RecordProperty("mesh_ms_per_slice", std::to_string(meshPerSlice));
+  if (brep) RecordProperty("exact_ms_per_slice", std::to_string(exactPerSlice));
+}
+
+INSTANTIATE_TEST_SUITE_P(OcctMisc, OcctSample, testing::ValuesIn(sampleFiles()), testName);
+
+}  // namespace
+}  // namespace sliceform

@@ -1,0 +1,209 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// Region2d: areas, loop orientation, components, booleans, offsets and line intervals.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "geometry/region2d.hpp"
+#include "support/error.hpp"
+#include "test_support.hpp"
+
+namespace sliceform {
+namespace {
+
+using Loop = Region2d::Loop;
+using test::signedArea;
+
+// Axis-aligned rectangle [x0, x1] x [y0, y1], counter-clockwise unless `clockwise`.
+Loop rect(double x0, double y0, double x1, double y1, bool clockwise = false) {
+  Loop l{{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}};
+  if (clockwise) std::reverse(l.begin(), l.end());
+  return l;
+}
+
+// Clipper works in units of 1e-5 mm, so exact inputs come back exact up to rounding.
+constexpr double kTiny = 1e-9;
+
+TEST(Region2d, SquareWithHoleArea) {
+  // Even-odd: the hole is a hole whatever its orientation.
+  for (bool cw : {false, true}) {
+    const Region2d r = Region2d::fromLoops({rect(0, 0, 10, 10), rect(3, 3, 7, 7, cw)});
+    EXPECT_NEAR(r.area(), 100.0 - 16.0, kTiny);
+    EXPECT_EQ(r.holeCount(), 1);
+  }
+  // Non-zero: a clockwise inner loop is a hole, a counter-clockwise one is not.
+  EXPECT_NEAR(Region2d::fromLoops({rect(0, 0, 10, 10), rect(3, 3, 7, 7, true)}, FillRule::NonZero).area(),
+              84.0, kTiny);
+  EXPECT_NEAR(Region2d::fromLoops({rect(0, 0, 10, 10), rect(3, 3, 7, 7)}, FillRule::NonZero).area(), 100.0,
+              kTiny);
+  EXPECT_TRUE(Region2d().empty());
+  EXPECT_EQ(Region2d().area(), 0.0);
+}
+
+TEST(Region2d, LoopsAreOrientedOuterPositiveHoleNegative) {
+  // Give the outer loop clockwise and the hole counter-clockwise: loops() must fix both.
+  const Region2d r = Region2d::fromLoops({rect(0, 0, 10, 10, true), rect(3, 3, 7, 7)});
+  const std::vector<Loop> loops = r.loops();
+  ASSERT_EQ(loops.size(), 2u);
+  int outers = 0, holes = 0;
+  for (const Loop& l : loops) {
+    const double a = signedArea(l);
+    if (a > 0) {
+      ++outers;
+      EXPECT_NEAR(a, 100.0, kTiny);
+    } else {
+      ++holes;
+      EXPECT_NEAR(a, -16.0, kTiny);
+    }
+  }
+  EXPECT_EQ(outers, 1);
+  EXPECT_EQ(holes, 1);
+  const Box2 b = r.bounds();
+  EXPECT_FALSE(b.empty);
+  EXPECT_DOUBLE_EQ(b.min.x, 0.0);
+  EXPECT_DOUBLE_EQ(b.min.y, 0.0);
+  EXPECT_DOUBLE_EQ(b.max.x, 10.0);
+  EXPECT_DOUBLE_EQ(b.max.y, 10.0);
+  EXPECT_TRUE(Region2d().bounds().empty);
+}
+
+TEST(Region2d, ComponentsOfDisjointSquares) {
+  const Region2d r = Region2d::fromLoops({rect(0, 0, 2, 2), rect(5, 0, 8, 3)});
+  const std::vector<Region2d> parts = r.components();
+  ASSERT_EQ(parts.size(), 2u);
+  double areas[2] = {parts[0].area(), parts[1].area()};
+  if (areas[0] > areas[1]) std::swap(areas[0], areas[1]);
+  EXPECT_NEAR(areas[0], 4.0, kTiny);
+  EXPECT_NEAR(areas[1], 9.0, kTiny);
+}
+
+TEST(Region2d, ComponentsOfSquareWithHoleAndIsland) {
+  // Outer 10x10 with a 6x6 hole, and a 2x2 island inside the hole.
+  const Region2d r = Region2d::fromLoops({rect(0, 0, 10, 10), rect(2, 2, 8, 8), rect(4, 4, 6, 6)});
+  EXPECT_NEAR(r.area(), 100.0 - 36.0 + 4.0, kTiny);
+  const std::vector<Region2d> parts = r.components();
+  ASSERT_EQ(parts.size(), 2u);
+  const Region2d& ring = parts[0].area() > parts[1].area() ? parts[0] : parts[1];
+  const Region2d& island = parts[0].area() > parts[1].area() ? parts[1] : parts[0];
+  EXPECT_NEAR(ring.area(), 64.0, kTiny);
+  EXPECT_EQ(ring.holeCount(), 1);
+  EXPECT_EQ(ring.loops().size(), 2u);
+  EXPECT_NEAR(island.area(), 4.0, kTiny);
+  EXPECT_EQ(island.holeCount(), 0);
+  EXPECT_EQ(island.components().size(), 1u);
+}
+
+TEST(Region2d, BooleanAreas) {
+  const Region2d a = Region2d::fromLoops({rect(0, 0, 10, 10)});
+  const Region2d b = Region2d::fromLoops({rect(5, 5, 15, 15)});
+  EXPECT_NEAR(a.unite(b).area(), 175.0, kTiny);
+  EXPECT_NEAR(a.intersect(b).area(), 25.0, kTiny);
+  EXPECT_NEAR(a.subtract(b).area(), 75.0, kTiny);
+  EXPECT_NEAR(b.subtract(a).area(), 75.0, kTiny);
+  // Subtracting a region strictly inside makes a hole; intersecting with a disjoint one
+  // leaves nothing.
+  const Region2d holed = a.subtract(Region2d::fromLoops({rect(1, 1, 2, 3)}));
+  EXPECT_NEAR(holed.area(), 98.0, kTiny);
+  EXPECT_EQ(holed.holeCount(), 1);
+  EXPECT_TRUE(a.intersect(Region2d::fromLoops({rect(20, 20, 21, 21)})).empty());
+  EXPECT_NEAR(Region2d::uniteAll({a, b, Region2d::fromLoops({rect(20, 0, 21, 1)})}).area(), 176.0, kTiny);
+}
+
+TEST(Region2d, ErodedSquareKeepsSharpCorners) {
+  const double a = 10, d = 1.5;
+  const Region2d r = Region2d::fromLoops({rect(0, 0, a, a)}).offset(-d);
+  // Rounding each vertex to 1e-5 mm moves an edge by at most that much.
+  EXPECT_NEAR(r.area(), (a - 2 * d) * (a - 2 * d), 4 * a * 1e-5);
+  const Box2 b = r.bounds();
+  EXPECT_NEAR(b.min.x, d, 1e-5);
+  EXPECT_NEAR(b.max.y, a - d, 1e-5);
+  // Eroding by more than half the side leaves nothing.
+  EXPECT_TRUE(Region2d::fromLoops({rect(0, 0, a, a)}).offset(-a / 2 - 0.1).empty());
+}
+
+TEST(Region2d, GrownSquareHasRoundCorners) {
+  const double a = 10, d = 2;
+  const Region2d r = Region2d::fromLoops({rect(0, 0, a, a)}).offset(d);
+  const double expected = a * a + 4 * a * d + M_PI * d * d;
+  EXPECT_NEAR(r.area(), expected, 1e-3 * expected);
+  // The corner arcs are polygons inscribed in the true arcs: never more than the exact area.
+  EXPECT_LE(r.area(), expected + 1e-6);
+  // With square corners the area would be (a + 2d)²: the rounding must show.
+  EXPECT_LT(r.area(), (a + 2 * d) * (a + 2 * d) - 0.5 * (4 - M_PI) * d * d);
+  const Box2 b = r.bounds();
+  EXPECT_NEAR(b.min.x, -d, 1e-5);
+  EXPECT_NEAR(b.max.x, a + d, 1e-5);
+}
+
+TEST(Region2d, IntervalsOnVerticalLineThroughHole) {
+  // Square [0,10]² with a hole [3,7] x [4,6.5].
+  const Region2d r = Region2d::fromLoops({rect(0, 0, 10, 10), rect(3, 4, 7, 6.5)});
+  const std::vector<Interval> iv = r.intervalsOnLine({5, 0}, {0, 1});
+  ASSERT_EQ(iv.size(), 2u);
+  EXPECT_DOUBLE_EQ(iv[0].lo, 0.0);
+  EXPECT_DOUBLE_EQ(iv[0].hi, 4.0);
+  EXPECT_DOUBLE_EQ(iv[1].lo, 6.5);
+  EXPECT_DOUBLE_EQ(iv[1].hi, 10.0);
+  // t is measured from `point`: moving it down by 3 shifts every interval by 3.
+  const std::vector<Interval> shifted = r.intervalsOnLine({5, -3}, {0, 1});
+  ASSERT_EQ(shifted.size(), 2u);
+  EXPECT_DOUBLE_EQ(shifted[0].lo, 3.0);
+  EXPECT_DOUBLE_EQ(shifted[1].hi, 13.0);
+  // A line beside the hole crosses the square once; a line outside not at all.
+  const std::vector<Interval> beside = r.intervalsOnLine({1.25, 0}, {0, 1});
+  ASSERT_EQ(beside.size(), 1u);
+  EXPECT_DOUBLE_EQ(beside[0].lo, 0.0);
+  EXPECT_DOUBLE_EQ(beside[0].hi, 10.0);
+  EXPECT_TRUE(r.intervalsOnLine({11, 0}, {0, 1}).empty());
+  // A horizontal line through the hole.
+  const std::vector<Interval> across = r.intervalsOnLine({0, 5}, {1, 0});
+  ASSERT_EQ(across.size(), 2u);
+  EXPECT_DOUBLE_EQ(across[0].hi, 3.0);
+  EXPECT_DOUBLE_EQ(across[1].lo, 7.0);
+}
+
+TEST(Region2d, IntervalsOnLineThroughVertices) {
+  // A diamond with vertices on the axes: the vertical line x = 0 runs through two vertices,
+  // which must be counted once each.
+  const Region2d r = Region2d::fromLoops({{{0, -2}, {3, 0}, {0, 2}, {-3, 0}}});
+  const std::vector<Interval> iv = r.intervalsOnLine({0, 0}, {0, 1});
+  ASSERT_EQ(iv.size(), 1u);
+  EXPECT_DOUBLE_EQ(iv[0].lo, -2.0);
+  EXPECT_DOUBLE_EQ(iv[0].hi, 2.0);
+}
+
+TEST(Region2d, HoleCount) {
+  const Region2d two = Region2d::fromLoops({rect(0, 0, 10, 4), rect(1, 1, 3, 3), rect(6, 1, 8, 3)});
+  EXPECT_EQ(two.holeCount(), 2);
+  EXPECT_NEAR(two.area(), 40.0 - 8.0, kTiny);
+  const Region2d filled = two.unite(Region2d::fromLoops({rect(0.5, 0.5, 3.5, 3.5)}));
+  EXPECT_EQ(filled.holeCount(), 1);
+  EXPECT_EQ(Region2d::fromLoops({rect(0, 0, 1, 1)}).holeCount(), 0);
+}
+
+TEST(Region2d, FillRulesOnOverlappingSquares) {
+  // Two counter-clockwise squares overlapping in [5,10]²: non-zero fills the overlap
+  // (winding 2), even-odd leaves it out.
+  const std::vector<Loop> loops{rect(0, 0, 10, 10), rect(5, 5, 15, 15)};
+  EXPECT_NEAR(Region2d::fromLoops(loops, FillRule::NonZero).area(), 175.0, kTiny);
+  EXPECT_NEAR(Region2d::fromLoops(loops, FillRule::EvenOdd).area(), 150.0, kTiny);
+  // Opposite orientations: winding 0 in the overlap for both rules.
+  const std::vector<Loop> opposite{rect(0, 0, 10, 10), rect(5, 5, 15, 15, true)};
+  EXPECT_NEAR(Region2d::fromLoops(opposite, FillRule::NonZero).area(), 150.0, kTiny);
+}
+
+TEST(Region2d, CoordinatesOutOfRangeAreRejected) {
+  for (double bad : {double(NAN), double(INFINITY), 1e20}) {
+    try {
+      Region2d::fromLoops({{{0, 0}, {bad, 0}, {0, 1}}});
+      ADD_FAILURE() << "no error for coordinate " << bad;
+    } catch (const Error& e) {
+      EXPECT_EQ(e.kind(), ErrorKind::BadInput);
+    }
+  }
+  // Loops of fewer than three points enclose nothing.
+  EXPECT_TRUE(Region2d::fromLoops({{{0, 0}, {1, 1}}}).empty());
+}
+
+}  // namespace
+}  // namespace sliceform
