@@ -12,5 +12,6 @@ namespace sliceform::cli {
 using Run = std::function<void()>;
 
 Run addSliceCommand(CLI::App& app);
+Run addDesignCommand(CLI::App& app);
 
 }  // namespace sliceform::cli

@@ -39,6 +39,7 @@ int main(int argc, char** argv) {
   app.footer(kFooter);
   app.require_subcommand(1);
   sliceform::cli::Run slice = sliceform::cli::addSliceCommand(app);
+  sliceform::cli::Run design = sliceform::cli::addDesignCommand(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -47,6 +48,7 @@ int main(int argc, char** argv) {
   }
   try {
     if (app.got_subcommand("slice")) slice();
+    if (app.got_subcommand("design")) design();
     return 0;
   } catch (const sliceform::Error& e) {
     std::cerr << "sliceform: " << e.what() << "\n";

@@ -3,6 +3,7 @@
 
 #include <BRepBndLib.hxx>
 #include <BRepBuilderAPI_MakeSolid.hxx>
+#include <BRepBuilderAPI_Transform.hxx>
 #include <BRepLib.hxx>
 #include <BRepMesh_IncrementalMesh.hxx>
 #include <BRepTools.hxx>
@@ -250,6 +251,28 @@ Model modelFromMesh(const Mesh& mesh, const std::string& source) {
     throw Error(ErrorKind::BadInput, source + ": every triangle has zero area (repeated vertices)");
   model.bounds = model.mesh.bounds();
   return model;
+}
+
+Model scaledToSize(const Model& model, double longestSide) {
+  const Vec3 size = model.bounds.size();
+  const double longest = std::max({size.x, size.y, size.z});
+  if (!(longestSide > 0) || !std::isfinite(longestSide))
+    throw Error(ErrorKind::BadParameter, "the size must be a positive length in mm");
+  if (!(longest > 0)) throw Error(ErrorKind::BadInput, model.source + ": the model has no extent");
+  const double factor = longestSide / longest;
+  Model out = model;
+  for (Vec3& v : out.mesh.vertices) v = v * factor;
+  out.bounds = Box3{};
+  out.bounds.add(model.bounds.min * factor);
+  out.bounds.add(model.bounds.max * factor);
+  out.meshDeflection = model.meshDeflection * factor;
+  if (!model.shape.IsNull()) {
+    gp_Trsf scale;
+    scale.SetScale(gp_Pnt(0, 0, 0), factor);
+    out.shape = occtGuard("scaling the shape",
+                          [&] { return BRepBuilderAPI_Transform(model.shape, scale, true).Shape(); });
+  }
+  return out;
 }
 
 void requireClosed(const Model& model) {

@@ -32,6 +32,9 @@ Model readModel(const std::string& path);
 Model modelFromShape(const TopoDS_Shape& shape, const std::string& source, double deflection = 0);
 Model modelFromMesh(const Mesh& mesh, const std::string& source);
 
+// The model scaled about the origin so that its longest side is `longestSide` mm.
+Model scaledToSize(const Model& model, double longestSide);
+
 // Throws BadInput naming the boundary and non-manifold edges if the mesh is not closed.
 void requireClosed(const Model& model);
 

@@ -1,0 +1,105 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+#include "arrangement/arrange.hpp"
+
+#include <chrono>
+#include <cmath>
+
+#include "slicing/mesh_slicer.hpp"
+#include "support/error.hpp"
+
+namespace sliceform {
+namespace {
+
+void checkParams(const ArrangementParams& p) {
+  const double nu = norm(p.u), nv = norm(p.v);
+  if (!(nu > 0) || !(nv > 0) || !std::isfinite(nu) || !std::isfinite(nv))
+    throw Error(ErrorKind::BadParameter, "the slicing directions must be finite non-zero vectors");
+  if (std::fabs(dot(p.u, p.v)) > 1e-6 * nu * nv)
+    throw Error(ErrorKind::BadParameter, "the slicing directions U and V must be orthogonal");
+  if (p.interval <= 0 && (p.slices < 2 || p.slices > 4096))
+    throw Error(ErrorKind::BadParameter, "the number of slices must be between 2 and 4096");
+  if (!(p.tauA >= 0) || !(p.tauM >= 0 && p.tauM < 1))
+    throw Error(ErrorKind::BadParameter, "tauA must be >= 0 and tauM in [0, 1)");
+  if (!(p.hinges.minHingeLength >= 0) || !(p.hinges.minSlotEdgeDistance >= 0))
+    throw Error(ErrorKind::BadParameter, "hinge length and slot edge distance must be >= 0");
+}
+
+SliceSet sliceFamily(const Model& model, const SliceFrame& frame, const ArrangementParams& p) {
+  const Interval range = model.mesh.extent(frame.normal);
+  int count = p.slices;
+  if (p.interval > 0) {
+    const double n = std::floor((range.hi - range.lo) / p.interval);
+    if (n > 4096) throw Error(ErrorKind::BadParameter, "the slice interval gives more than 4096 slices");
+    count = std::max(2, static_cast<int>(n));
+  }
+  return sliceMesh(model.mesh, frame, uniformPositions(range.lo, range.hi, count));
+}
+
+class Stopwatch {
+ public:
+  explicit Stopwatch(std::vector<StageTime>& out) : out_(out) {}
+  void lap(const char* stage) {
+    const auto now = std::chrono::steady_clock::now();
+    out_.push_back({stage, std::chrono::duration<double, std::milli>(now - last_).count()});
+    last_ = now;
+  }
+
+ private:
+  std::vector<StageTime>& out_;
+  std::chrono::steady_clock::time_point last_ = std::chrono::steady_clock::now();
+};
+
+}  // namespace
+
+Arrangement arrange(const Model& model, const ArrangementParams& params) {
+  checkParams(params);
+  requireClosed(model);
+  Arrangement a;
+  Stopwatch clock(a.timings);
+  const Vec3 w = cross(params.u, params.v);
+  a.u = sliceFamily(model, makeSliceFrame(params.u, w), params);
+  a.v = sliceFamily(model, makeSliceFrame(params.v, w), params);
+  clock.lap("slice");
+
+  a.reebU = buildReebGraph(a.u);
+  a.reebV = buildReebGraph(a.v);
+  simplifyReebGraph(a.reebU, params.tauM);
+  simplifyReebGraph(a.reebV, params.tauM);
+  clock.lap("reeb");
+
+  a.uCylinders = approximateCylinders(a.reebU, Family::U, a.u.interval, params.tauA);
+  a.vCylinders = approximateCylinders(a.reebV, Family::V, a.v.interval, params.tauA);
+  clock.lap("gca");
+
+  const HingeTable table(a.u, a.v, a.uCylinders, a.vCylinders, params.hinges);
+  a.scaffold = stabilize(a.u, a.v, a.uCylinders, a.vCylinders, table, params.stabilize);
+  clock.lap("frames");
+
+  std::vector<BarPatch> bars;
+  for (const ScaffoldPatch& p : a.scaffold.patches) bars.push_back({p.family, p.position});
+  std::vector<PinHinge> pins;
+  for (const ScaffoldHinge& h : a.scaffold.hinges)
+    if (h.holds) pins.push_back({h.u, h.v});
+  a.certificate = certify(bars, pins);
+  clock.lap("certificate");
+
+  a.quality = measureQuality(a.u, a.v, a.uCylinders, a.vCylinders, a.scaffold);
+  clock.lap("quality");
+  return a;
+}
+
+PatchPlane patchPlane(const Arrangement& a, int patch) {
+  const ScaffoldPatch& p = a.scaffold.patches[patch];
+  const SliceFrame& f = p.family == Family::U ? a.u.frame : a.v.frame;
+  return {f.normal * p.position, f.normal, f.xAxis, f.yAxis};
+}
+
+std::pair<Vec3, Vec3> hingeEnds(const Arrangement& a, const ScaffoldHinge& h) {
+  // The point on both planes at height w: U, V, W are orthonormal.
+  const Vec3 base = a.u.frame.normal * a.scaffold.patches[h.u].position +
+                    a.v.frame.normal * a.scaffold.patches[h.v].position;
+  const Vec3& up = a.u.frame.yAxis;
+  return {base + up * h.w.lo, base + up * h.w.hi};
+}
+
+}  // namespace sliceform

@@ -1,0 +1,57 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// Sliceform arrangement (§4): from a model to a certified scaffold. Runs the stages in
+// order (slice sets, Reeb graphs, cylinders, hinge table, stabilization, certificate,
+// quality) and times each one.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "cylinders/gca.hpp"
+#include "frames/hinge_table.hpp"
+#include "frames/scaffold.hpp"
+#include "frames/stabilize.hpp"
+#include "model/model.hpp"
+#include "quality/quality.hpp"
+#include "reeb/reeb_graph.hpp"
+#include "verify/certificate.hpp"
+
+namespace sliceform {
+
+struct ArrangementParams {
+  Vec3 u{1, 0, 0}, v{0, 1, 0};  // slicing directions, orthogonal; W = U x V is up
+  int slices = 128;             // per direction, unless interval > 0
+  double interval = 0;          // mm between slices; > 0 overrides `slices`
+  double tauA = 0.1;            // cylinder error budget, relative to the part's volume
+  double tauM = 0.03;           // Reeb branch merging threshold (weight ratio)
+  HingeRules hinges;
+  StabilizeOptions stabilize;
+};
+
+struct StageTime {
+  std::string stage;
+  double ms = 0;
+};
+
+struct Arrangement {
+  SliceSet u, v;
+  ReebGraph reebU, reebV;
+  std::vector<Cylinder> uCylinders, vCylinders;
+  Scaffold scaffold;
+  Certificate certificate;
+  Quality quality;
+  std::vector<StageTime> timings;
+};
+
+// Throws BadParameter for directions that are not orthogonal or out-of-range values.
+Arrangement arrange(const Model& model, const ArrangementParams& params);
+
+// Where a patch lies in 3D: origin (on the plane), normal and in-plane axes, mm.
+struct PatchPlane {
+  Vec3 origin, normal, xAxis, yAxis;
+};
+PatchPlane patchPlane(const Arrangement& a, int patch);
+// The ends of a hinge in 3D.
+std::pair<Vec3, Vec3> hingeEnds(const Arrangement& a, const ScaffoldHinge& h);
+
+}  // namespace sliceform

@@ -1,0 +1,31 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// How well a scaffold depicts the model. Decisions, since the paper gives no measure:
+// - silhouette along U (V): the union of the U (V) slices, i.e. the model seen along U,
+//   against the union of the U-patches' shapes; intersection over union of the two areas;
+// - silhouette along W: in the (U, V) plane, the model's footprint (for every U slice, the
+//   V-extent of its material, one slice interval wide) against the lattice's footprint (the
+//   same strips for the slices that carry a patch, in both families); it tells how evenly
+//   the patches visit the model seen from above;
+// - volume IoU: the slices swept by one interval against the cylinders swept the same way;
+//   the cylinders contain the slices, so it is model volume / cylinder volume, the smaller
+//   of the two families.
+#pragma once
+
+#include <vector>
+
+#include "cylinders/gca.hpp"
+#include "frames/scaffold.hpp"
+
+namespace sliceform {
+
+struct Quality {
+  double silhouetteIouU = 0, silhouetteIouV = 0, silhouetteIouW = 0;
+  double volumeIou = 0;
+};
+
+Quality measureQuality(const SliceSet& u, const SliceSet& v, const std::vector<Cylinder>& uCylinders,
+                       const std::vector<Cylinder>& vCylinders, const Scaffold& scaffold);
+
+double iou(const Region2d& a, const Region2d& b);
+
+}  // namespace sliceform
