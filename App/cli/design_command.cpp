@@ -18,7 +18,7 @@ namespace {
 struct DesignOptions {
   std::string model;
   std::string json;
-  double size = 0;
+  double size = 150;
   std::vector<double> u{1, 0, 0}, v{0, 1, 0};
   std::string scheme = "both";
   ArrangementParams params;
@@ -79,7 +79,10 @@ Run addDesignCommand(CLI::App& app) {
       ->check(CLI::ExistingFile);
   cmd->add_option("--json", o->json,
                   "write the scaffold (patches, hinges, certificate, quality) to this file");
-  cmd->add_option("--size", o->size, "scale the model so its longest side is this many mm (default: as is)");
+  cmd->add_option(
+         "--size", o->size,
+         "scale the model so its longest side is this many mm (0: keep its size; mesh files carry no unit)")
+      ->capture_default_str();
   cmd->add_option("--u", o->u, "U slicing direction x,y,z")
       ->delimiter(',')
       ->expected(3)

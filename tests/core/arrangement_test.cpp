@@ -50,6 +50,25 @@ TEST(Certificate, PatchHingedOnceWobbles) {
   EXPECT_NE(c.reason.find("wobbles"), std::string::npos);
 }
 
+TEST(Certificate, UPatchHingedToOneVPatchOnlySwings) {
+  auto [patches, hinges] = grid(2, 2);
+  patches.push_back({Family::U, 25});
+  hinges.push_back({4, 2});
+  hinges.push_back({4, 2});  // two hinge segments on the same line: still one pin
+  EXPECT_EQ(certify(patches, hinges).nullity, 2);
+}
+
+TEST(Certificate, SharedPatchDoesNotChainStability) {
+  // Two 2x2 grids sharing one U-patch (the paper's Def. 12 chain) swing against each other.
+  std::vector<BarPatch> p{{Family::U, 0},   {Family::U, 10}, {Family::V, 0}, {Family::V, 5},
+                          {Family::U, -10}, {Family::V, 20}, {Family::V, 25}};
+  std::vector<PinHinge> h{{0, 2}, {0, 3}, {1, 2}, {1, 3}, {0, 5}, {0, 6}, {4, 5}, {4, 6}};
+  EXPECT_EQ(certify(p, h).nullity, 2);
+  h.push_back({1, 5});
+  h.push_back({1, 6});  // a second U-patch shared by both: rigid again
+  EXPECT_EQ(certify(p, h).nullity, 1);
+}
+
 TEST(Certificate, TwoSeparateGridsAreNotOneScaffold) {
   auto [patches, hinges] = grid(2, 2);
   for (int k = 0; k < 4; ++k) patches.push_back({patches[k].family, patches[k].position + 100});

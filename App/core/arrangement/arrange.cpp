@@ -3,6 +3,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <sstream>
 
 #include "slicing/mesh_slicer.hpp"
 #include "support/error.hpp"
@@ -33,6 +34,12 @@ SliceSet sliceFamily(const Model& model, const SliceFrame& frame, const Arrangem
     count = std::max(2, static_cast<int>(n));
   }
   return sliceMesh(model.mesh, frame, uniformPositions(range.lo, range.hi, count));
+}
+
+std::string mm(double value) {
+  std::ostringstream out;
+  out << value;
+  return out.str();
 }
 
 class Stopwatch {
@@ -74,6 +81,14 @@ Arrangement arrange(const Model& model, const ArrangementParams& params) {
   const HingeTable table(a.u, a.v, a.uCylinders, a.vCylinders, params.hinges);
   a.scaffold = stabilize(a.u, a.v, a.uCylinders, a.vCylinders, table, params.stabilize);
   clock.lap("frames");
+  if (a.scaffold.patches.empty()) {
+    throw Error(ErrorKind::BadInput,
+                model.source +
+                    ": no two U-patches and two V-patches can hold each other with hinges of at least " +
+                    mm(params.hinges.minHingeLength) + " mm and " + mm(params.hinges.minSlotEdgeDistance) +
+                    " mm of paper beside each slot; the model is too thin or too small for these settings "
+                    "(try a larger --size, or a smaller --min-hinge-length or --min-slot-edge-distance)");
+  }
 
   std::vector<BarPatch> bars;
   for (const ScaffoldPatch& p : a.scaffold.patches) bars.push_back({p.family, p.position});

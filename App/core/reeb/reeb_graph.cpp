@@ -3,6 +3,7 @@
 
 #include <boost/pending/disjoint_sets.hpp>
 
+#include <algorithm>
 #include <map>
 #include <utility>
 
@@ -14,9 +15,16 @@ bool boxesOverlap(const Box2& a, const Box2& b) {
          b.min.y <= a.max.y;
 }
 
-// Pieces of consecutive slices are joined when their overlap has area.
+// Pieces of consecutive slices are joined when they overlap by a real share of the smaller
+// one. Any overlap at all is not enough: separate parts that touch (a ball resting on its
+// stand, occ/Ball.brep) overlap each other's next section by a sliver at every slice, and
+// the graph turned into a ladder of one-slice edges (170 of them instead of 4).
+constexpr double kMinOverlapShare = 0.2;
+
 bool overlap(const Region2d& a, const Region2d& b) {
-  return boxesOverlap(a.bounds(), b.bounds()) && a.intersect(b).area() > 0;
+  if (!boxesOverlap(a.bounds(), b.bounds())) return false;
+  const double common = a.intersect(b).area();
+  return common > 0 && common >= kMinOverlapShare * std::min(a.area(), b.area());
 }
 
 // Renumbers vertices 0..n-1 after edges were removed or joined.
@@ -28,8 +36,30 @@ void compactVertices(ReebGraph& g) {
   g.vertexCount = static_cast<int>(ids.size());
 }
 
-int degree(const ReebGraph& g, int vertex) {
-  return static_cast<int>(g.incoming(vertex).size() + g.outgoing(vertex).size());
+// Connected pieces of the graph with edge `skip` left out.
+int componentCount(const ReebGraph& g, int skip) {
+  std::vector<int> parent(g.vertexCount), rank(g.vertexCount);
+  boost::disjoint_sets<int*, int*> sets(rank.data(), parent.data());
+  for (int v = 0; v < g.vertexCount; ++v) sets.make_set(v);
+  for (int e = 0; e < static_cast<int>(g.edges.size()); ++e)
+    if (e != skip) sets.union_set(g.edges[e].tail, g.edges[e].head);
+  std::vector<int> used(g.vertexCount, 0);
+  for (int e = 0; e < static_cast<int>(g.edges.size()); ++e) {
+    if (e == skip) continue;
+    used[g.edges[e].tail] = used[g.edges[e].head] = 1;
+  }
+  int count = 0;
+  for (int v = 0; v < g.vertexCount; ++v) count += used[v] && sets.find_set(v) == v ? 1 : 0;
+  return count;
+}
+
+// Removing edge e keeps the graph's pieces together: a dangling branch, or one edge of a
+// loop (the thin side of a small ring), but never a bridge between two parts.
+bool removable(const ReebGraph& g, int e) {
+  const ReebEdge& s = g.edges[e];
+  const bool dangling = g.incoming(s.tail).size() + g.outgoing(s.tail).size() == 1 ||
+                        g.incoming(s.head).size() + g.outgoing(s.head).size() == 1;
+  return dangling || componentCount(g, e) == componentCount(g, -1);
 }
 
 // One merge of §4.1.2 if any applies; false when the graph is simplified.
@@ -52,9 +82,7 @@ bool mergeOnce(ReebGraph& g, double tauM) {
     const int keep = left ? out[0] : in[0];
     for (int small : left ? in : out) {
       const ReebEdge& s = g.edges[small];
-      const int farEnd = left ? s.tail : s.head;
-      if (degree(g, farEnd) != 1) continue;  // not dangling
-      if (!(s.weight() < tauM * g.edges[keep].weight())) continue;
+      if (!(s.weight() < tauM * g.edges[keep].weight()) || !removable(g, small)) continue;
       ReebEdge& k = g.edges[keep];
       Region2d& cap = left ? k.patches.front() : k.patches.back();
       std::vector<Region2d> all = s.patches;
@@ -88,6 +116,14 @@ std::vector<int> ReebGraph::outgoing(int vertex) const {
   for (size_t i = 0; i < edges.size(); ++i)
     if (edges[i].tail == vertex) out.push_back(static_cast<int>(i));
   return out;
+}
+
+int ReebGraph::componentCount() const {
+  return sliceform::componentCount(*this, -1);
+}
+
+int ReebGraph::cycleRank() const {
+  return static_cast<int>(edges.size()) - vertexCount + componentCount();
 }
 
 ReebGraph buildReebGraph(const SliceSet& set) {

@@ -26,6 +26,8 @@ struct ReebGraph {
 
   std::vector<int> incoming(int vertex) const;  // edges whose head is `vertex`
   std::vector<int> outgoing(int vertex) const;  // edges whose tail is `vertex`
+  int componentCount() const;                   // connected pieces
+  int cycleRank() const;                        // independent cycles: edges - vertices + pieces
 };
 
 ReebGraph buildReebGraph(const SliceSet& set);
@@ -35,8 +37,8 @@ ReebGraph buildReebGraph(const SliceSet& set);
 //   w(e')/w(e) < tauM is left-merged into e (e's first patch becomes its union with all of
 //   e''s patches) and removed; mirrored for one incoming and several outgoing edges;
 // - an edge that ends where exactly one other edge starts is joined with it.
-// Decision: only dangling branches (nothing else attached at their far end) are absorbed,
-// so simplification never disconnects the graph.
+// Decision: a small edge is absorbed only if the graph stays in as many pieces (a dangling
+// branch, or one side of a small loop); a bridge between two parts is kept.
 void simplifyReebGraph(ReebGraph& graph, double tauM);
 
 }  // namespace sliceform

@@ -56,9 +56,15 @@ Certificate certify(const std::vector<BarPatch>& patches, const std::vector<PinH
     }
     row += 2;
   }
-  Eigen::FullPivLU<Eigen::MatrixXd> lu(m);
-  lu.setThreshold(1e-9);
-  c.nullity = static_cast<int>(m.cols() - lu.rank());
+  // rank(M) = rank(M^T M), and M^T M is only 3(n-1) square however many pins there are:
+  // count its eigenvalues that vanish next to the largest (coordinates are unit-scaled).
+  const Eigen::MatrixXd normal = m.transpose() * m;
+  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen(normal, Eigen::EigenvaluesOnly);
+  const Eigen::VectorXd values = eigen.eigenvalues();
+  const double largest = values.size() ? values.cwiseAbs().maxCoeff() : 0.0;
+  int vanishing = 0;
+  for (Eigen::Index k = 0; k < values.size(); ++k) vanishing += values[k] <= 1e-10 * largest ? 1 : 0;
+  c.nullity = largest > 0 ? vanishing : static_cast<int>(m.cols());
   c.stable = c.nullity == 1;
   if (!c.stable) {
     c.reason = c.nullity == 0 ? "the scaffold cannot fold (no motion left with one patch held)"
