@@ -76,6 +76,20 @@ TEST(Certificate, TwoSeparateGridsAreNotOneScaffold) {
   EXPECT_EQ(certify(patches, hinges).nullity, 1 + 3 + 1);  // the second grid moves freely and folds
 }
 
+TEST(Certificate, ClosePatchesFarFromTheOriginStayApart) {
+  // The answer must not depend on where the model sits: a grid of patches 1 mm apart,
+  // 20 m from the origin (scaled by the largest coordinate, it once came out nullity 3).
+  for (double offset : {0.0, 677.0, 20000.0}) {
+    std::vector<BarPatch> patches{
+        {Family::U, offset}, {Family::U, offset + 1}, {Family::V, offset}, {Family::V, offset + 1}};
+    std::vector<PinHinge> hinges{{0, 2}, {0, 3}, {1, 2}, {1, 3}};
+    EXPECT_EQ(certify(patches, hinges).nullity, 1) << "offset " << offset;
+    patches.push_back({Family::U, offset + 0.5});
+    hinges.push_back({4, 3});  // a patch hung on one of them still swings
+    EXPECT_EQ(certify(patches, hinges).nullity, 2) << "offset " << offset;
+  }
+}
+
 TEST(Certificate, SeveralHingesOfOnePairAreOnePin) {
   auto [patches, hinges] = grid(2, 2);
   hinges.push_back(hinges[0]);

@@ -64,6 +64,8 @@ class Builder {
                        [&](const ScaffoldPatch& p) { return p.family == f && p.cylinder == c; });
   }
 
+  double pos(const Candidate& c) const { return (c.family == Family::U ? u_ : v_).slices[c.slice].position; }
+
   void place(const Candidate& c) {
     const SliceSet& set = c.family == Family::U ? u_ : v_;
     scaffold.patches.push_back({c.family, c.cylinder, c.slice, set.slices[c.slice].position});
@@ -92,24 +94,41 @@ class Builder {
           holding[q][p / 64] |= uint64_t{1} << (p % 64);
       }
     }
+    // Among all grids, the one whose patches are farthest apart (as a share of the model's
+    // extent, up to a quarter of it): close patches make a flimsy grid, and patches a
+    // slice apart are no use on paper. Ties go to the earlier, bigger and more central ones.
+    const double extentU = u_.slices.back().position - u_.slices.front().position;
+    const double extentV = v_.slices.back().position - v_.slices.front().position;
+    double bestScore = -1;
+    Candidate best[4];
     for (size_t q1 = 0; q1 < vs.size(); ++q1) {
       for (size_t q2 = q1 + 1; q2 < vs.size(); ++q2) {
         if (vs[q1].slice == vs[q2].slice) continue;
-        int first = -1;
+        const double sepV = std::fabs(pos(vs[q1]) - pos(vs[q2])) / std::max(extentV, 1e-9);
+        if (std::min(sepV, 0.25) <= bestScore) continue;
+        int first = -1, far = -1;  // a held U-patch, and the held one farthest from it
         for (size_t w = 0; w < words; ++w) {
           for (uint64_t bits = holding[q1][w] & holding[q2][w]; bits; bits &= bits - 1) {
             const int p = static_cast<int>(64 * w + __builtin_ctzll(bits));
-            if (first < 0) {
+            if (first < 0)
               first = p;
-            } else if (us[p].slice != us[first].slice) {
-              for (const Candidate& c : {us[first], us[p], vs[q1], vs[q2]}) place(c);
-              return true;
-            }
+            else if (far < 0 ||
+                     std::fabs(pos(us[p]) - pos(us[first])) > std::fabs(pos(us[far]) - pos(us[first])))
+              far = p;
           }
+        }
+        if (far < 0 || us[far].slice == us[first].slice) continue;
+        const double sepU = std::fabs(pos(us[far]) - pos(us[first])) / std::max(extentU, 1e-9);
+        const double score = std::min({sepU, sepV, 0.25});
+        if (score > bestScore) {
+          bestScore = score;
+          best[0] = us[first], best[1] = us[far], best[2] = vs[q1], best[3] = vs[q2];
         }
       }
     }
-    return false;
+    if (bestScore < 0) return false;
+    for (const Candidate& c : best) place(c);
+    return true;
   }
 
   // A patch for cylinder c where it is held by two placed patches; false if nowhere.
