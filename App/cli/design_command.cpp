@@ -2,6 +2,7 @@
 // `sliceform design MODEL`: arranges a stable sliceform scaffold (§4) and prints a
 // summary: patches per family, hinges, the certificate, quality, time per stage.
 // --json writes the scaffold.
+#include <algorithm>
 #include <cstdio>
 #include <memory>
 #include <string>
@@ -59,6 +60,22 @@ void runDesign(DesignOptions o) {
     total += t.ms;
   }
   std::printf(" total %.1f ms\n", total);
+  // A large cylinder left without a patch is usually a separate part of the model (a stand
+  // under a ball) that no hinge connects to the rest: the scaffold is stable, but the part
+  // is missing from it. Say so rather than let "stable" hide it.
+  for (Family f : {Family::U, Family::V}) {
+    const auto& cylinders = f == Family::U ? a.uCylinders : a.vCylinders;
+    double largest = 0;
+    for (const Cylinder& c : cylinders) largest = std::max(largest, c.section.area());
+    int big = 0;
+    for (int c : f == Family::U ? a.scaffold.uncoveredU : a.scaffold.uncoveredV)
+      big += cylinders[c].section.area() >= 0.15 * largest ? 1 : 0;
+    if (big > 0)
+      std::printf(
+          "warning    %d large %s cylinder(s) have no patch: a part of the model is not connected to the "
+          "scaffold by hinges that hold\n",
+          big, f == Family::U ? "U" : "V");
+  }
   if (!o.json.empty()) {
     writeJson(scaffoldJson(a, p), o.json);
     std::printf("wrote      %s\n", o.json.c_str());

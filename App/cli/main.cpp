@@ -1,6 +1,9 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // `sliceform`: the command line face of the core. Errors are printed as one line on stderr
 // and mapped to the exit codes documented in --help.
+#include <Standard_Failure.hxx>
+
+#include <filesystem>
 #include <iostream>
 
 #include "cli/commands.hpp"
@@ -53,8 +56,19 @@ int main(int argc, char** argv) {
   } catch (const sliceform::Error& e) {
     std::cerr << "sliceform: " << e.what() << "\n";
     return exitCode(e.kind());
+  } catch (const std::filesystem::filesystem_error& e) {
+    std::cerr << "sliceform: cannot write " << e.path1().string() << ": " << e.code().message() << "\n";
+    return 5;
   } catch (const std::exception& e) {
     std::cerr << "sliceform: internal error: " << e.what() << "\n";
+    return 1;
+  } catch (const Standard_Failure& e) {
+    // OCCT's exceptions do not derive from std::exception; the core guards its calls, so
+    // one arriving here is a bug, but it must still end as a message, not an abort.
+    std::cerr << "sliceform: internal error in OpenCASCADE: " << e.GetMessageString() << "\n";
+    return 1;
+  } catch (...) {
+    std::cerr << "sliceform: internal error of an unknown kind\n";
     return 1;
   }
 }

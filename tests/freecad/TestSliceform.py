@@ -30,14 +30,16 @@ class TestInstalledAddon(unittest.TestCase):
     def test_missing_native_module_gives_a_clear_error(self):
         import sliceform_app
 
-        saved = sys.modules.pop("sliceform_native")
+        saved = sys.modules.pop("sliceform_native", None)  # None if not imported yet
         sys.modules["sliceform_native"] = None  # makes the import fail
         try:
             with self.assertRaises(sliceform_app.NativeModuleMissing) as caught:
                 sliceform_app.native()
             self.assertIn("README", str(caught.exception))
         finally:
-            sys.modules["sliceform_native"] = saved
+            del sys.modules["sliceform_native"]
+            if saved is not None:
+                sys.modules["sliceform_native"] = saved
 
 
 class TestBrepExchange(unittest.TestCase):

@@ -219,7 +219,7 @@ Model modelFromShape(const TopoDS_Shape& shape, const std::string& source, doubl
   Model model;
   model.source = source;
   model.kind = SourceKind::Brep;
-  model.shape = solidsOf(shape, source);
+  model.shape = occtGuard("finding the solids", [&] { return solidsOf(shape, source); });
   // Make every edge's tolerance cover the distance between its 3D curve and its curves on
   // the faces. Imported files can understate it (step/linkrods.step: up to 4e-4 mm against
   // 1e-7), and OCCT's Booleans then drop parts of a section without any error, so the exact
