@@ -2,11 +2,11 @@
 // sliceform_native: the core for Python. Shapes cross as BREP strings (what FreeCAD's
 // Part.Shape.exportBrepToString gives), meshes as lists of points and index triples, and
 // results come back as plain dicts and lists, so the FreeCAD side needs no C++ types.
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
 #include <BRepTools.hxx>
 #include <BRep_Builder.hxx>
 #include <TopExp_Explorer.hxx>
-#include <pybind11/pybind11.h>
-#include <pybind11/stl.h>
 
 #include <array>
 #include <sstream>
@@ -27,8 +27,12 @@ namespace {
 using Triple = std::array<double, 3>;
 using Index3 = std::array<uint32_t, 3>;
 
-Vec3 toVec(const Triple& t) { return {t[0], t[1], t[2]}; }
-py::tuple toTuple(const Vec3& v) { return py::make_tuple(v.x, v.y, v.z); }
+Vec3 toVec(const Triple& t) {
+  return {t[0], t[1], t[2]};
+}
+py::tuple toTuple(const Vec3& v) {
+  return py::make_tuple(v.x, v.y, v.z);
+}
 
 TopoDS_Shape shapeFromBrep(const std::string& brep) {
   if (brep.empty()) throw Error(ErrorKind::BadInput, "the BREP string is empty");
@@ -57,7 +61,9 @@ Mesh meshFromLists(const std::vector<Triple>& points, const std::vector<Index3>&
   return mesh;
 }
 
-SliceFrame frameFor(const Triple& normal, const Triple& up) { return makeSliceFrame(toVec(normal), toVec(up)); }
+SliceFrame frameFor(const Triple& normal, const Triple& up) {
+  return makeSliceFrame(toVec(normal), toVec(up));
+}
 
 py::list loopsOf(const Region2d& region) {
   py::list loops;
@@ -77,20 +83,16 @@ py::dict frameDict(const SliceFrame& frame) {
   return d;
 }
 
-std::vector<double> positionsFor(const Model& model, const SliceFrame& frame, int count) {
-  const Interval range = model.mesh.extent(frame.normal);
-  return uniformPositions(range.lo, range.hi, count);
-}
-
 py::dict sliceBrepString(const std::string& brep, const Triple& normal, const Triple& up, int count,
                          double deflection) {
   const Model model = modelFromShape(shapeFromBrep(brep), "the shape");
   const SliceFrame frame = frameFor(normal, up);
-  const std::vector<double> positions = positionsFor(model, frame, count);
+  const std::vector<double> positions = slicePositions(model.mesh, frame, count);
   std::vector<ExactSlice> slices;
   {
     py::gil_scoped_release release;
-    slices = sliceBrep(model.shape, frame, positions, deflection > 0 ? deflection : model.meshDeflection / 10);
+    slices = sliceBrep(model.shape, frame, positions,
+                       deflection > 0 ? deflection : exactDeflection(model.meshDeflection));
   }
   py::dict result = frameDict(frame);
   py::list out;
@@ -111,7 +113,7 @@ py::dict sliceMeshLists(const std::vector<Triple>& points, const std::vector<Ind
   const Model model = modelFromMesh(meshFromLists(points, triangles), "the mesh");
   requireClosed(model);
   const SliceFrame frame = frameFor(normal, up);
-  const std::vector<double> positions = positionsFor(model, frame, count);
+  const std::vector<double> positions = slicePositions(model.mesh, frame, count);
   SliceSet set;
   {
     py::gil_scoped_release release;
@@ -154,7 +156,9 @@ py::dict readModelFile(const std::string& path) {
 }
 
 // Reads a BREP string and writes it back: the shape FreeCAD gets from the core.
-std::string brepRoundTrip(const std::string& brep) { return brepFromShape(shapeFromBrep(brep)); }
+std::string brepRoundTrip(const std::string& brep) {
+  return brepFromShape(shapeFromBrep(brep));
+}
 
 }  // namespace
 

@@ -59,8 +59,7 @@ void runSlice(const SliceOptions& o) {
   } families[] = {{"U", u}, {"V", v}};
   for (const auto& family : families) {
     const SliceFrame frame = makeSliceFrame(family.normal, w);
-    const Interval range = model.mesh.extent(frame.normal);
-    const std::vector<double> positions = uniformPositions(range.lo, range.hi, o.slices);
+    const std::vector<double> positions = slicePositions(model.mesh, frame, o.slices);
 
     SliceSet meshSet, exactSet;
     std::vector<ExactSlice> exact;
@@ -72,7 +71,7 @@ void runSlice(const SliceOptions& o) {
     }
     if (wantExact) {
       const auto start = std::chrono::steady_clock::now();
-      exact = sliceBrep(model.shape, frame, positions, std::max(1e-3, model.meshDeflection / 10));
+      exact = sliceBrep(model.shape, frame, positions, exactDeflection(model.meshDeflection));
       exactMs = msSince(start);
       exactSet.frame = frame;
       exactSet.interval = positions.size() > 1 ? positions[1] - positions[0] : 0;

@@ -65,7 +65,7 @@ double msSince(std::chrono::steady_clock::time_point start) {
 // it), the two slicers may land on different sides of the jump: there both areas must lie
 // within the jump, as measured by both slicers at position -/+ d.
 void expectAgreement(const Model& model, const SliceFrame& frame, double position, double meshArea,
-                     double exactArea, double tolerance, double exactDeflection) {
+                     double exactArea, double tolerance, double deflection) {
   if (std::fabs(meshArea - exactArea) <= tolerance) return;
   const double d = model.meshDeflection;
   const SliceSet around = sliceMesh(model.mesh, frame, {position - d, position + d});
@@ -76,7 +76,7 @@ void expectAgreement(const Model& model, const SliceFrame& frame, double positio
     return;
   }
   const std::vector<ExactSlice> exact =
-      sliceBrep(model.shape, frame, {position - d, position + d}, exactDeflection);
+      sliceBrep(model.shape, frame, {position - d, position + d}, deflection);
   // Region areas: they unite overlapping solids, as the mesh slicer does.
   const double exactBelow = exact[0].region.area(), exactAbove = exact[1].region.area();
   const double lo = std::min({below, above, exactBelow, exactAbove});
@@ -147,9 +147,9 @@ TEST_P(OcctSample, ReadsAndSlicesOrRefusesCleanly) {
 
     // Exact sections at four planes, compared with mesh sections at the same planes.
     const std::vector<double> positions = uniformPositions(range.lo, range.hi, exactPlanes);
-    const double exactDeflection = std::max(1e-3, model.meshDeflection / 10);  // as the CLI does
+    const double deflection = exactDeflection(model.meshDeflection);  // as the CLI does
     start = std::chrono::steady_clock::now();
-    const std::vector<ExactSlice> exact = sliceBrep(model.shape, frame, positions, exactDeflection);
+    const std::vector<ExactSlice> exact = sliceBrep(model.shape, frame, positions, deflection);
     exactMs += msSince(start);
     const SliceSet mesh = sliceMesh(model.mesh, frame, positions);
     double largest = 0;
@@ -160,13 +160,12 @@ TEST_P(OcctSample, ReadsAndSlicesOrRefusesCleanly) {
       // twice, its region does not. The region is within the polygon deflection of the faces.
       const double m = mesh.slices[i].region.area(), x = exact[i].area, u = exact[i].region.area();
       EXPECT_GE(x, 0.0);
-      const double polygonError =
-          exact[i].faces.IsNull() ? 0 : perimeter(exact[i].faces) * exactDeflection + 1e-6;
+      const double polygonError = exact[i].faces.IsNull() ? 0 : perimeter(exact[i].faces) * deflection + 1e-6;
       EXPECT_LE(u, x + polygonError) << "at " << positions[i];
       if (solids == 1) {
         EXPECT_NEAR(u, x, polygonError) << "at " << positions[i];
       }
-      expectAgreement(model, frame, positions[i], m, u, 0.02 * largest + 1.0, exactDeflection);
+      expectAgreement(model, frame, positions[i], m, u, 0.02 * largest + 1.0, deflection);
       areas << " " << m << "/" << x;
     }
   }

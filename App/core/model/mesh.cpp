@@ -1,10 +1,11 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 #include "model/mesh.hpp"
 
+#include <boost/pending/disjoint_sets.hpp>
+
 #include <algorithm>
 #include <cmath>
 #include <cstring>
-#include <numeric>
 #include <sstream>
 #include <unordered_map>
 
@@ -12,11 +13,6 @@
 
 namespace sliceform {
 namespace {
-
-uint64_t edgeKey(uint32_t a, uint32_t b) {
-  if (a > b) std::swap(a, b);
-  return (uint64_t{a} << 32) | b;
-}
 
 struct Vec3Hash {
   size_t operator()(const Vec3& v) const {
@@ -29,17 +25,6 @@ struct Vec3Hash {
     }
     return static_cast<size_t>(h);
   }
-};
-
-// Union-find over vertex ids, to count boundary loops as connected edge sets.
-struct DisjointSets {
-  std::vector<uint32_t> parent;
-  explicit DisjointSets(size_t n) : parent(n) { std::iota(parent.begin(), parent.end(), 0u); }
-  uint32_t find(uint32_t x) {
-    while (parent[x] != x) x = parent[x] = parent[parent[x]];
-    return x;
-  }
-  void join(uint32_t a, uint32_t b) { parent[find(a)] = find(b); }
 };
 
 }  // namespace
@@ -91,7 +76,8 @@ MeshTopology analyseTopology(const Mesh& mesh) {
     for (int i = 0; i < 3; ++i) edges.push_back(edgeKey(t[i], t[(i + 1) % 3]));
   }
   std::sort(edges.begin(), edges.end());
-  DisjointSets loops(mesh.vertices.size());
+  // Union-find over vertex ids: each set of joined boundary vertices is one hole.
+  boost::disjoint_sets_with_storage<> loops(mesh.vertices.size());
   std::vector<uint32_t> boundaryVertices;
   for (size_t i = 0; i < edges.size();) {
     size_t j = i;
@@ -100,7 +86,7 @@ MeshTopology analyseTopology(const Mesh& mesh) {
     if (uses == 1) {
       const auto a = static_cast<uint32_t>(edges[i] >> 32), b = static_cast<uint32_t>(edges[i]);
       ++topo.boundaryEdges;
-      loops.join(a, b);
+      loops.union_set(a, b);
       boundaryVertices.push_back(a);
       if (topo.sampleBoundaryEdges.size() < 3)
         topo.sampleBoundaryEdges.push_back({mesh.vertices[a], mesh.vertices[b]});
@@ -112,7 +98,7 @@ MeshTopology analyseTopology(const Mesh& mesh) {
   // Each set of joined boundary vertices is one hole.
   std::vector<uint32_t> roots;
   roots.reserve(boundaryVertices.size());
-  for (uint32_t v : boundaryVertices) roots.push_back(loops.find(v));
+  for (uint32_t v : boundaryVertices) roots.push_back(loops.find_set(v));
   std::sort(roots.begin(), roots.end());
   topo.holes = static_cast<size_t>(std::unique(roots.begin(), roots.end()) - roots.begin());
   return topo;

@@ -6,6 +6,7 @@
 #include <array>
 #include <cstdint>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "geometry/vec.hpp"
@@ -34,6 +35,12 @@ struct MeshTopology {
 };
 
 MeshTopology analyseTopology(const Mesh& mesh);
+
+// One key per undirected mesh edge, whatever the order of its two vertices.
+inline uint64_t edgeKey(uint32_t a, uint32_t b) {
+  if (a > b) std::swap(a, b);
+  return (uint64_t{a} << 32) | b;
+}
 
 // Merges vertices with bit-identical coordinates (STL soups, per-face BRep triangulations
 // whose shared edges carry the same nodes) and drops triangles that collapse.

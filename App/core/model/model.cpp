@@ -24,6 +24,8 @@
 #include <TopoDS_Compound.hxx>
 #include <TopoDS_Edge.hxx>
 
+#include <boost/pending/disjoint_sets.hpp>
+
 #include <algorithm>
 #include <cctype>
 #include <filesystem>
@@ -135,11 +137,7 @@ Mesh gatherTriangulation(const TopoDS_Shape& solid) {
   // closed").
   TopTools_IndexedMapOfShape edges;                   // same TShape and location: same edge
   std::map<std::pair<int, int>, uint32_t> edgeNodes;  // (edge, node k) -> first vertex seen
-  std::vector<uint32_t> parent;                       // union-find over the mesh vertices
-  auto find = [&](uint32_t x) {
-    while (parent[x] != x) x = parent[x] = parent[parent[x]];
-    return x;
-  };
+  std::vector<std::pair<uint32_t, uint32_t>> joins;   // vertices that are one point
   for (TopExp_Explorer it(solid, TopAbs_FACE); it.More(); it.Next()) {
     const TopoDS_Face& face = TopoDS::Face(it.Current());
     TopLoc_Location location;
@@ -150,7 +148,6 @@ Mesh gatherTriangulation(const TopoDS_Shape& solid) {
     for (Standard_Integer i = 1; i <= poly->NbNodes(); ++i) {
       const gp_Pnt p = poly->Node(i).Transformed(trsf);
       mesh.vertices.push_back({p.X(), p.Y(), p.Z()});
-      parent.push_back(static_cast<uint32_t>(parent.size()));
     }
     const bool reversed = face.Orientation() == TopAbs_REVERSED;
     for (Standard_Integer i = 1; i <= poly->NbTriangles(); ++i) {
@@ -173,12 +170,14 @@ Mesh gatherTriangulation(const TopoDS_Shape& solid) {
         const auto [first, added] = edgeNodes.emplace(std::make_pair(id, k), v);
         // Join only nodes that coincide, should two faces ever order an edge's nodes apart.
         if (!added && norm(mesh.vertices[first->second] - mesh.vertices[v]) <= tolerance)
-          parent[find(v)] = find(first->second);
+          joins.emplace_back(v, first->second);
       }
     }
   }
+  boost::disjoint_sets_with_storage<> points(mesh.vertices.size());
+  for (const auto& [a, b] : joins) points.union_set(a, b);
   for (auto& t : mesh.triangles)
-    for (uint32_t& v : t) v = find(v);
+    for (uint32_t& v : t) v = static_cast<uint32_t>(points.find_set(v));
   return weldExact(mesh);
 }
 

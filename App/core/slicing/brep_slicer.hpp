@@ -20,6 +20,12 @@ struct ExactSlice {
   Region2d region;     // the faces' boundaries polygonised within `deflection`
 };
 
+// The polygon deflection used for a model triangulated within `meshDeflection`: ten times
+// finer, but never below 1 µm.
+inline double exactDeflection(double meshDeflection) {
+  return meshDeflection / 10 > 1e-3 ? meshDeflection / 10 : 1e-3;
+}
+
 // `deflection` is the largest distance, in mm, between an edge and its polygon.
 std::vector<ExactSlice> sliceBrep(const TopoDS_Shape& solid, const SliceFrame& frame,
                                   const std::vector<double>& positions, double deflection);

@@ -10,11 +10,6 @@
 namespace sliceform {
 namespace {
 
-uint64_t edgeKey(uint32_t a, uint32_t b) {
-  if (a > b) std::swap(a, b);
-  return (uint64_t{a} << 32) | b;
-}
-
 // A segment of one triangle's section. It runs from `from` to `to`, oriented by the
 // triangle so that, for an outward-facing mesh, the material is on its left.
 struct Segment {
@@ -136,6 +131,11 @@ class PlaneSlicer {
 };
 
 }  // namespace
+
+std::vector<double> slicePositions(const Mesh& mesh, const SliceFrame& frame, int count) {
+  const Interval range = mesh.extent(frame.normal);
+  return uniformPositions(range.lo, range.hi, count);
+}
 
 SliceSet sliceMesh(const Mesh& mesh, const SliceFrame& frame, const std::vector<double>& positions,
                    MeshSliceStats* stats) {

@@ -18,6 +18,9 @@ struct MeshSliceStats {
   size_t inconsistentLoops = 0;  // loops whose triangles disagree on orientation
 };
 
+// `count` uniform positions (cell centres) across the mesh's extent along the frame normal.
+std::vector<double> slicePositions(const Mesh& mesh, const SliceFrame& frame, int count);
+
 // One slice per position. Throws BadInput if a plane meets the mesh in a chain that does
 // not close (the mesh has a hole there). Uses every core.
 SliceSet sliceMesh(const Mesh& mesh, const SliceFrame& frame, const std::vector<double>& positions,
