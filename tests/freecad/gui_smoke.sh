@@ -3,12 +3,7 @@
 # Runs gui_smoke.py in the FreeCAD GUI under Xvfb, with the workbench installed from
 # BUILD_DIR into a throwaway HOME. Usage: gui_smoke.sh BUILD_DIR [SCREENSHOT.png]
 set -euo pipefail
-build=$(cd "$1" && pwd)
-here=$(cd "$(dirname "$0")" && pwd)
-home=$(mktemp -d)
-trap 'rm -rf "$home"' EXIT
-cmake --install "$build" --prefix "$home/.local/share/FreeCAD/Mod/Sliceform" >/dev/null
-export HOME="$home" XDG_DATA_HOME="$home/.local/share" XDG_CONFIG_HOME="$home/.config" XDG_CACHE_HOME="$home/.cache"
+source "$(dirname "$0")/throwaway_home.sh" "$1"
 export QTWEBENGINE_DISABLE_SANDBOX=1 SLICEFORM_SMOKE_RESULT="$home/result.txt"
 export SLICEFORM_SMOKE_PNG="${2:-$build/gui_smoke.png}"
 timeout 300 xvfb-run -a -s "-screen 0 1280x1024x24" freecad "$here/gui_smoke.py" >"$home/freecad.log" 2>&1 || true
