@@ -6,10 +6,25 @@
 #include <CLI/CLI.hpp>
 
 #include <functional>
+#include <string>
+#include <vector>
+
+#include "geometry/vec.hpp"
 
 namespace sliceform::cli {
 
 using Run = std::function<void()>;
+
+// What every command asks first: the model file and the two slicing directions.
+struct ModelOptions {
+  std::string model;
+  std::vector<double> u{1, 0, 0}, v{0, 1, 0};
+
+  Vec3 uDirection() const { return {u[0], u[1], u[2]}; }
+  Vec3 vDirection() const { return {v[0], v[1], v[2]}; }
+};
+
+void addModelOptions(CLI::App* command, ModelOptions& options);
 
 Run addSliceCommand(CLI::App& app);
 Run addDesignCommand(CLI::App& app);

@@ -16,11 +16,9 @@
 namespace sliceform::cli {
 namespace {
 
-struct DesignOptions {
-  std::string model;
+struct DesignOptions : ModelOptions {
   std::string json;
   double size = 150;
-  std::vector<double> u{1, 0, 0}, v{0, 1, 0};
   std::string scheme = "both";
   ArrangementParams params;
 };
@@ -29,8 +27,8 @@ void runDesign(DesignOptions o) {
   Model model = readModel(o.model);
   if (o.size > 0) model = scaledToSize(model, o.size);
   ArrangementParams& p = o.params;
-  p.u = {o.u[0], o.u[1], o.u[2]};
-  p.v = {o.v[0], o.v[1], o.v[2]};
+  p.u = o.uDirection();
+  p.v = o.vDirection();
   p.stabilize.scheme = o.scheme == "u"   ? Scheme::DominantU
                        : o.scheme == "v" ? Scheme::DominantV
                                          : Scheme::Both;
@@ -91,22 +89,12 @@ Run addDesignCommand(CLI::App& app) {
   auto o = std::make_shared<DesignOptions>();
   CLI::App* cmd =
       app.add_subcommand("design", "Arrange a stable sliceform scaffold for the model and summarise it.");
-  cmd->add_option("model", o->model, "STEP, IGES, BREP, STL, OBJ or OFF file")
-      ->required()
-      ->check(CLI::ExistingFile);
+  addModelOptions(cmd, *o);
   cmd->add_option("--json", o->json,
                   "write the scaffold (patches, hinges, certificate, quality) to this file");
   cmd->add_option(
          "--size", o->size,
          "scale the model so its longest side is this many mm (0: keep its size; mesh files carry no unit)")
-      ->capture_default_str();
-  cmd->add_option("--u", o->u, "U slicing direction x,y,z")
-      ->delimiter(',')
-      ->expected(3)
-      ->capture_default_str();
-  cmd->add_option("--v", o->v, "V slicing direction x,y,z, orthogonal to U (W = U x V is up)")
-      ->delimiter(',')
-      ->expected(3)
       ->capture_default_str();
   cmd->add_option("-n,--slices", o->params.slices, "slices per direction")->capture_default_str();
   cmd->add_option("--interval", o->params.interval, "slice interval in mm (overrides --slices)");

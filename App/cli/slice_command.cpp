@@ -19,18 +19,11 @@
 namespace sliceform::cli {
 namespace {
 
-struct SliceOptions {
-  std::string model;
+struct SliceOptions : ModelOptions {
   std::string outDir = "slices";
   int slices = 16;
-  std::vector<double> u{1, 0, 0};
-  std::vector<double> v{0, 1, 0};
   std::string method = "auto";
 };
-
-Vec3 toVec(const std::vector<double>& d) {
-  return {d[0], d[1], d[2]};
-}
 
 double msSince(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
@@ -39,7 +32,7 @@ double msSince(std::chrono::steady_clock::time_point start) {
 void runSlice(const SliceOptions& o) {
   const Model model = readModel(o.model);
   requireClosed(model);
-  const Vec3 u = toVec(o.u), v = toVec(o.v), w = cross(u, v);
+  const Vec3 u = o.uDirection(), v = o.vDirection(), w = cross(u, v);
   if (!(norm(w) > 0)) throw Error(ErrorKind::BadParameter, "--u and --v must not be parallel");
   const bool wantExact =
       o.method == "exact" || o.method == "both" || (o.method == "auto" && model.kind == SourceKind::Brep);
@@ -109,22 +102,12 @@ Run addSliceCommand(CLI::App& app) {
   auto options = std::make_shared<SliceOptions>();
   CLI::App* cmd =
       app.add_subcommand("slice", "Cut the model along U and V and write the slice sets as SVG (mm).");
-  cmd->add_option("model", options->model, "STEP, IGES, BREP, STL, OBJ or OFF file")
-      ->required()
-      ->check(CLI::ExistingFile);
+  addModelOptions(cmd, *options);
   cmd->add_option("-o,--output", options->outDir, "folder for slices_U.svg and slices_V.svg")
       ->capture_default_str();
   cmd->add_option("-n,--slices", options->slices, "slices per direction")
       ->capture_default_str()
       ->check(CLI::Range(1, 4096));
-  cmd->add_option("--u", options->u, "U slicing direction x,y,z")
-      ->delimiter(',')
-      ->expected(3)
-      ->capture_default_str();
-  cmd->add_option("--v", options->v, "V slicing direction x,y,z (W = U x V is up)")
-      ->delimiter(',')
-      ->expected(3)
-      ->capture_default_str();
   cmd->add_option("--method", options->method, "auto (exact for CAD, mesh for meshes), mesh, exact or both")
       ->check(CLI::IsMember({"auto", "mesh", "exact", "both"}))
       ->capture_default_str();

@@ -247,12 +247,9 @@ Scaffold stabilize(const SliceSet& u, const SliceSet& v, const std::vector<Cylin
     }
     if (options.maxSpacing > 0) b.densify(options.maxSpacing);
   }
+  for (const auto& [f, c] : required)
+    if (!b.covered(f, c)) (f == Family::U ? b.scaffold.uncoveredU : b.scaffold.uncoveredV).push_back(c);
   Scaffold s = std::move(b.scaffold);
-  for (const auto& [f, c] : required) {
-    const bool has = std::any_of(s.patches.begin(), s.patches.end(),
-                                 [&](const ScaffoldPatch& p) { return p.family == f && p.cylinder == c; });
-    if (!has) (f == Family::U ? s.uncoveredU : s.uncoveredV).push_back(c);
-  }
   findHinges(s, table);
   return s;
 }
