@@ -6,11 +6,6 @@
 namespace sliceform {
 namespace {
 
-// The x coordinate, in `frame`, of the plane at `position` of the other family's frame.
-double lineX(const SliceFrame& frame, const SliceFrame& other, double position) {
-  return position * dot(other.normal, frame.xAxis);
-}
-
 // Intervals of `section` along the vertical lines of every slice of `other`.
 std::vector<std::vector<Interval>> onLines(const Region2d& section, const SliceFrame& frame,
                                            const SliceSet& other) {
@@ -44,13 +39,14 @@ std::vector<Interval> intersectIntervals(const std::vector<Interval>& a, const s
 HingeTable::HingeTable(const SliceSet& u, const SliceSet& v, const std::vector<Cylinder>& uCylinders,
                        const std::vector<Cylinder>& vCylinders, const HingeRules& rules)
     : rules_(rules) {
+  const double erosion = rules.minSlotEdgeDistance + rules.slotWidth / 2;
   for (const Cylinder& c : uCylinders) {
     uFull_.push_back(onLines(c.section, u.frame, v));
-    uEroded_.push_back(onLines(c.section.offset(-rules.minSlotEdgeDistance), u.frame, v));
+    uEroded_.push_back(onLines(c.section.offset(-erosion), u.frame, v));
   }
   for (const Cylinder& c : vCylinders) {
     vFull_.push_back(onLines(c.section, v.frame, u));
-    vEroded_.push_back(onLines(c.section.offset(-rules.minSlotEdgeDistance), v.frame, u));
+    vEroded_.push_back(onLines(c.section.offset(-erosion), v.frame, u));
   }
 }
 
@@ -64,10 +60,13 @@ bool HingeTable::holds(int a, int i, int b, int j) const {
   return false;
 }
 
-bool HingeTable::holds(int a, int i, int b, int j, const Interval& segment) const {
+Interval HingeTable::grip(int a, int i, int b, int j, const Interval& segment) const {
+  Interval best{0, 0};
   for (const Interval& s : intersectIntervals(uEroded_[a][j], vEroded_[b][i]))
-    if (s.hi - s.lo >= rules_.minHingeLength && s.lo >= segment.lo && s.hi <= segment.hi) return true;
-  return false;
+    if (s.hi - s.lo >= rules_.minHingeLength && s.lo >= segment.lo && s.hi <= segment.hi &&
+        s.hi - s.lo > best.hi - best.lo)
+      best = s;
+  return best;
 }
 
 }  // namespace sliceform

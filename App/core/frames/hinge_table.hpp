@@ -5,6 +5,8 @@
 // inside both sections is a hinge segment (a slot must be cut there, or they collide); it
 // holds the scaffold together only if, on both sections eroded by min_slot_edge_distance,
 // it is still at least min_hinge_length long. That is the fix for weak slots (Fig. 16a).
+// The erosion is min_slot_edge_distance plus half the slot width, so the paper left beside
+// a slot's walls, not only beside the hinge line, is at least min_slot_edge_distance.
 #pragma once
 
 #include <vector>
@@ -18,6 +20,7 @@ namespace sliceform {
 struct HingeRules {
   double minHingeLength = 4;       // mm
   double minSlotEdgeDistance = 2;  // mm of material on each side of a slot
+  double slotWidth = 0;            // mm, material thickness + clearance
 };
 
 class HingeTable {
@@ -29,8 +32,10 @@ class HingeTable {
   std::vector<Interval> segments(int a, int i, int b, int j) const;
   // Whether the two patches hold each other: some eroded overlap is long enough.
   bool holds(int a, int i, int b, int j) const;
-  // Whether a particular segment (from segments()) is one that holds.
-  bool holds(int a, int i, int b, int j, const Interval& segment) const;
+  // The grip of a segment (from segments()): its longest stretch inside both eroded
+  // sections, if that is long enough to hold; empty (lo >= hi) when the segment does not
+  // hold. Slots start from the middle of the grip, so the promised paper is there.
+  Interval grip(int a, int i, int b, int j, const Interval& segment) const;
 
  private:
   // Sections of U-cylinder a on the line of V-slice j: full[a][j], eroded; and mirrored.

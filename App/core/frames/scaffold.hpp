@@ -22,6 +22,7 @@ struct ScaffoldHinge {
   int u = 0, v = 0;    // patch indices of the U-patch and the V-patch
   Interval w;          // the segment along W, mm
   bool holds = false;  // long enough, with enough paper beside its slot, to carry load
+  Interval grip;       // where it holds (inside both eroded sections); slots start at its middle
 };
 
 enum class Scheme { DominantU, DominantV, Both };

@@ -262,8 +262,8 @@ void findHinges(Scaffold& scaffold, const HingeTable& table) {
     for (int b = 0; b < static_cast<int>(ps.size()); ++b) {
       if (ps[b].family != Family::V) continue;
       for (const Interval& w : table.segments(ps[a].cylinder, ps[a].slice, ps[b].cylinder, ps[b].slice)) {
-        const bool holds = table.holds(ps[a].cylinder, ps[a].slice, ps[b].cylinder, ps[b].slice, w);
-        scaffold.hinges.push_back({a, b, w, holds});
+        const Interval grip = table.grip(ps[a].cylinder, ps[a].slice, ps[b].cylinder, ps[b].slice, w);
+        scaffold.hinges.push_back({a, b, w, grip.hi > grip.lo, grip});
       }
     }
   }

@@ -48,4 +48,8 @@ std::vector<double> uniformPositions(double lo, double hi, int count) {
   return out;
 }
 
+double lineX(const SliceFrame& frame, const SliceFrame& other, double position) {
+  return position * dot(other.normal, frame.xAxis);
+}
+
 }  // namespace sliceform

@@ -33,6 +33,10 @@ SliceFrame makeSliceFrame(Vec3 normal, Vec3 up);
 // Any up direction orthogonal to `normal` (the world axis least aligned with it).
 SliceFrame makeSliceFrame(Vec3 normal);
 
+// The x, in `frame`'s coordinates, of the line where the plane at `position` of the other
+// family's frame crosses planes of `frame` (the line of every hinge between the two).
+double lineX(const SliceFrame& frame, const SliceFrame& other, double position);
+
 // `count` positions at the centres of equal cells of [lo, hi]: the first and last slices sit
 // half an interval inside the model, where its sections are not degenerate.
 std::vector<double> uniformPositions(double lo, double hi, int count);

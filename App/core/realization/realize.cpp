@@ -1,0 +1,345 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+#include "realization/realize.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <set>
+#include <tuple>
+
+#include "arrangement/arrange.hpp"
+#include "realization/interlock.hpp"
+#include "support/error.hpp"
+
+namespace sliceform {
+namespace {
+
+constexpr int kMaxCommonHinges = 8;  // 2^8 combinations of one pair's hinges at most
+
+// What the search minimises, in this order.
+struct Score {
+  int splits = 0, interlocks = 0, cutThroughs = 0;
+  bool operator<(const Score& o) const {
+    return std::tie(splits, interlocks, cutThroughs) < std::tie(o.splits, o.interlocks, o.cutThroughs);
+  }
+};
+
+using Move = std::vector<std::pair<int, SlotPair>>;  // (hinge, new combination)
+
+bool isUpDown(SlotPair s) { return s == SlotPair::UpDown || s == SlotPair::DownUp; }
+SlotPair flipped(SlotPair s) { return s == SlotPair::UpDown ? SlotPair::DownUp : SlotPair::UpDown; }
+
+double distanceToSegment(Vec2 p, Vec2 a, Vec2 b) {
+  const Vec2 d{b.x - a.x, b.y - a.y};
+  const double len2 = d.x * d.x + d.y * d.y;
+  double t = len2 > 0 ? ((p.x - a.x) * d.x + (p.y - a.y) * d.y) / len2 : 0;
+  t = std::clamp(t, 0.0, 1.0);
+  return std::hypot(p.x - a.x - t * d.x, p.y - a.y - t * d.y);
+}
+
+double distanceToBoundary(const std::vector<Region2d::Loop>& loops, Vec2 p) {
+  double best = std::numeric_limits<double>::infinity();
+  for (const Region2d::Loop& loop : loops)
+    for (size_t i = 0, n = loop.size(); i < n; ++i)
+      best = std::min(best, distanceToSegment(p, loop[i], loop[(i + 1) % n]));
+  return best;
+}
+
+class Search {
+ public:
+  Search(const RealizationInput& in, const SlotParams& params)
+      : in_(in), params_(params), n_(static_cast<int>(in.patches.size())) {
+    hingesOf_.resize(n_);
+    for (int h = 0; h < static_cast<int>(in.hinges.size()); ++h) {
+      hingesOf_[in.hinges[h].u].push_back(h);
+      hingesOf_[in.hinges[h].v].push_back(h);
+    }
+    slots_.assign(in.hinges.size(), SlotPair::UpDown);
+    cuts_.resize(n_);
+    slotted_.resize(n_);
+    pieces_.assign(n_, 1);
+    holes_.resize(n_);
+    locks_.assign(static_cast<size_t>(n_) * n_, 0);
+    for (int p = 0; p < n_; ++p) evaluatePatch(p);
+    for (int p = 0; p < n_; ++p)
+      if (in.patches[p].family == Family::U) refreshLocks(p);
+  }
+
+  void run() {
+    found_ = score().interlocks;
+    std::set<std::pair<int, int>> given;  // violations no move improves
+    const int maxSteps = 4 * static_cast<int>(in_.hinges.size()) + 16;
+    for (int step = 0; step < maxSteps; ++step) {
+      std::pair<int, int> v = nextViolation(given);
+      if (v.first < 0) break;
+      if (!improve(v)) given.insert(v);
+    }
+  }
+
+  Realization result() const {
+    Realization r;
+    r.params = params_;
+    r.slots = slots_;
+    r.cuts = cuts_;
+    r.slotted = slotted_;
+    const Score s = score();
+    r.interlocks = {found_, std::max(0, found_ - s.interlocks), s.interlocks, s.cutThroughs};
+    r.splitPatches = s.splits;
+    measure(r);
+    order(r);
+    return r;
+  }
+
+ private:
+  int lockAt(int a, int b) const { return locks_[static_cast<size_t>(a) * n_ + b]; }
+
+  void evaluatePatch(int p) {
+    const PatchShape& ps = in_.patches[p];
+    cuts_[p] = planSlots(ps.shape, patchHinges(in_, slots_, p), params_);
+    slotted_[p] = cutSlots(ps.shape, slotRegion(cuts_[p], params_), params_, &pieces_[p]);
+    holes_[p] = holeLoops(slotted_[p], ps.position);
+  }
+
+  void refreshLocks(int p) {
+    const bool isU = in_.patches[p].family == Family::U;
+    for (int q = 0; q < n_; ++q) {
+      if (in_.patches[q].family == in_.patches[p].family) continue;
+      const int a = isU ? p : q, b = isU ? q : p;
+      locks_[static_cast<size_t>(a) * n_ + b] = interlockCount(holes_[a], in_.uFrame, holes_[b], in_.vFrame);
+    }
+  }
+
+  Score score() const {
+    Score s;
+    for (int p = 0; p < n_; ++p) s.splits += pieces_[p] > 1 ? 1 : 0;
+    for (const int l : locks_) s.interlocks += l;
+    for (const SlotPair x : slots_) s.cutThroughs += isUpDown(x) ? 0 : 1;
+    return s;
+  }
+
+  // A split patch (p, -1), or an interlocked pair (U-patch, V-patch); (-1, -1) when none.
+  std::pair<int, int> nextViolation(const std::set<std::pair<int, int>>& given) const {
+    for (int p = 0; p < n_; ++p)
+      if (pieces_[p] > 1 && !given.count({p, -1})) return {p, -1};
+    for (int a = 0; a < n_; ++a)
+      for (int b = 0; b < n_; ++b)
+        if (lockAt(a, b) > 0 && !given.count({a, b})) return {a, b};
+    return {-1, -1};
+  }
+
+  // Applies a move and returns the score; undo() puts the old state back.
+  Score apply(const Move& move) {
+    saved_.clear();
+    savedLocks_ = locks_;
+    std::set<int> touched;
+    for (const auto& [h, pair] : move) {
+      saved_.push_back({h, slots_[h]});
+      slots_[h] = pair;
+      touched.insert(in_.hinges[h].u);
+      touched.insert(in_.hinges[h].v);
+    }
+    savedPatches_.clear();
+    for (const int p : touched) {
+      savedPatches_.push_back({p, cuts_[p], slotted_[p], pieces_[p], holes_[p]});
+      evaluatePatch(p);
+    }
+    for (const int p : touched) refreshLocks(p);
+    return score();
+  }
+
+  void undo() {
+    for (const auto& [h, pair] : saved_) slots_[h] = pair;
+    for (auto& s : savedPatches_) {
+      cuts_[s.patch] = std::move(s.cuts);
+      slotted_[s.patch] = std::move(s.slotted);
+      pieces_[s.patch] = s.pieces;
+      holes_[s.patch] = std::move(s.holes);
+    }
+    locks_ = savedLocks_;
+  }
+
+  // Whether hinge h may be cut through: not the last holding up/down hinge of its pair.
+  bool mayCutThrough(int h) const {
+    const ScaffoldHinge& hinge = in_.hinges[h];
+    if (!hinge.holds) return true;
+    for (const int o : hingesOf_[hinge.u])
+      if (o != h && in_.hinges[o].v == hinge.v && in_.hinges[o].holds && isUpDown(slots_[o])) return true;
+    return false;
+  }
+
+  std::vector<std::vector<Move>> tiers(std::pair<int, int> v) const {
+    std::vector<int> common, others;
+    const int a = v.first, b = v.second;
+    for (const int p : {a, b}) {
+      if (p < 0) continue;
+      for (const int h : hingesOf_[p]) {
+        const bool pair = b >= 0 && ((in_.hinges[h].u == a && in_.hinges[h].v == b));
+        if (pair && isUpDown(slots_[h])) {
+          if (std::find(common.begin(), common.end(), h) == common.end()) common.push_back(h);
+        } else if (std::find(others.begin(), others.end(), h) == others.end()) {
+          others.push_back(h);
+        }
+      }
+    }
+    std::vector<std::vector<Move>> out(3);
+    if (!common.empty() && common.size() <= kMaxCommonHinges) {
+      for (unsigned mask = 1; mask < (1u << common.size()); ++mask) {
+        Move m;
+        for (size_t k = 0; k < common.size(); ++k)
+          if (mask & (1u << k)) m.push_back({common[k], flipped(slots_[common[k]])});
+        out[0].push_back(m);
+      }
+    } else {
+      for (const int h : common) out[0].push_back({{h, flipped(slots_[h])}});
+    }
+    for (const int h : others) {
+      if (isUpDown(slots_[h])) out[1].push_back({{h, flipped(slots_[h])}});
+      else out[1].push_back({{h, SlotPair::UpDown}});  // undo an earlier cut-through
+    }
+    std::vector<int> all = common;
+    all.insert(all.end(), others.begin(), others.end());
+    for (const int h : all) {
+      if (!isUpDown(slots_[h]) || !mayCutThrough(h)) continue;
+      out[2].push_back({{h, SlotPair::ThroughNone}});
+      out[2].push_back({{h, SlotPair::NoneThrough}});
+    }
+    return out;
+  }
+
+  bool improve(std::pair<int, int> v) {
+    const Score now = score();
+    for (const std::vector<Move>& tier : tiers(v)) {
+      const Move* best = nullptr;
+      Score bestScore = now;
+      for (const Move& m : tier) {
+        const Score s = apply(m);
+        undo();
+        if (s < bestScore) bestScore = s, best = &m;
+      }
+      if (best) {
+        apply(*best);
+        return true;
+      }
+    }
+    return false;
+  }
+
+  void measure(Realization& r) const {
+    double minEdge = std::numeric_limits<double>::infinity();
+    double shortest = std::numeric_limits<double>::infinity();
+    std::vector<std::vector<Region2d::Loop>> outlines(n_);
+    for (int p = 0; p < n_; ++p) outlines[p] = in_.patches[p].shape.loops();
+    for (size_t h = 0; h < in_.hinges.size(); ++h) {
+      const ScaffoldHinge& hinge = in_.hinges[h];
+      if (!hinge.holds) continue;
+      shortest = std::min(shortest, hinge.w.hi - hinge.w.lo);
+      const double root = (hinge.grip.lo + hinge.grip.hi) / 2;
+      for (const int p : {hinge.u, hinge.v}) {
+        const Slot s = p == hinge.u ? uSlot(slots_[h]) : vSlot(slots_[h]);
+        if (s != Slot::Up && s != Slot::Down) continue;
+        const int other = p == hinge.u ? hinge.v : hinge.u;
+        const SliceFrame& f = in_.patches[p].family == Family::U ? in_.uFrame : in_.vFrame;
+        const SliceFrame& g = in_.patches[p].family == Family::U ? in_.vFrame : in_.uFrame;
+        const Vec2 at{lineX(f, g, in_.patches[other].position), root};
+        minEdge = std::min(minEdge, distanceToBoundary(outlines[p], at) - params_.width() / 2);
+      }
+    }
+    r.minSlotEdgeDistance = std::isfinite(minEdge) ? minEdge : 0;
+    r.shortestHinge = std::isfinite(shortest) ? shortest : 0;
+  }
+
+  // Greedy: start from the first U-patch, then always the patch hinged to most placed
+  // ones (ties: U before V, then by position, the paper's order along the slicing
+  // direction). Each patch is checked against every placed one: no interlock.
+  void order(Realization& r) const {
+    std::vector<bool> placed(n_, false);
+    std::vector<int> links(n_, 0);
+    r.assemblyChecked = true;
+    for (int step = 0; step < n_; ++step) {
+      int pick = -1;
+      for (int p = 0; p < n_; ++p) {
+        if (placed[p]) continue;
+        const auto key = [&](int q) {
+          return std::make_tuple(-links[q], in_.patches[q].family == Family::U ? 0 : 1, in_.patches[q].position);
+        };
+        if (pick < 0 || key(p) < key(pick)) pick = p;
+      }
+      for (const int q : r.assemblyOrder) {
+        const bool pu = in_.patches[pick].family == Family::U;
+        if (in_.patches[q].family == in_.patches[pick].family) continue;
+        if ((pu ? lockAt(pick, q) : lockAt(q, pick)) > 0) r.assemblyChecked = false;
+      }
+      placed[pick] = true;
+      r.assemblyOrder.push_back(pick);
+      for (const int h : hingesOf_[pick]) {
+        const int other = in_.hinges[h].u == pick ? in_.hinges[h].v : in_.hinges[h].u;
+        ++links[other];
+      }
+    }
+  }
+
+  struct SavedPatch {
+    int patch;
+    std::vector<SlotCut> cuts;
+    Region2d slotted;
+    int pieces;
+    HoleLoops holes;
+  };
+
+  const RealizationInput& in_;
+  SlotParams params_;
+  int n_;
+  std::vector<std::vector<int>> hingesOf_;
+  std::vector<SlotPair> slots_;
+  std::vector<std::vector<SlotCut>> cuts_;
+  std::vector<Region2d> slotted_;
+  std::vector<int> pieces_;
+  std::vector<HoleLoops> holes_;
+  std::vector<int> locks_;  // interlocked hole pairs, [U-patch * n + V-patch]
+  int found_ = 0;
+  std::vector<std::pair<int, SlotPair>> saved_;
+  std::vector<SavedPatch> savedPatches_;
+  std::vector<int> savedLocks_;
+};
+
+}  // namespace
+
+std::vector<PatchHinge> patchHinges(const RealizationInput& input, const std::vector<SlotPair>& slots, int patch) {
+  std::vector<PatchHinge> out;
+  const PatchShape& p = input.patches[patch];
+  const bool isU = p.family == Family::U;
+  const SliceFrame& f = isU ? input.uFrame : input.vFrame;
+  const SliceFrame& g = isU ? input.vFrame : input.uFrame;
+  for (size_t h = 0; h < input.hinges.size(); ++h) {
+    const ScaffoldHinge& hinge = input.hinges[h];
+    if ((isU ? hinge.u : hinge.v) != patch) continue;
+    const double x = lineX(f, g, input.patches[isU ? hinge.v : hinge.u].position);
+    const Interval& at = hinge.holds ? hinge.grip : hinge.w;
+    out.push_back({x, hinge.w, (at.lo + at.hi) / 2, isU ? uSlot(slots[h]) : vSlot(slots[h])});
+  }
+  return out;
+}
+
+RealizationInput realizationInput(const Arrangement& a) {
+  RealizationInput in;
+  in.uFrame = a.u.frame;
+  in.vFrame = a.v.frame;
+  for (const ScaffoldPatch& p : a.scaffold.patches) {
+    const std::vector<Cylinder>& cylinders = p.family == Family::U ? a.uCylinders : a.vCylinders;
+    in.patches.push_back({p.family, p.position, cylinders[p.cylinder].section});
+  }
+  in.hinges = a.scaffold.hinges;
+  return in;
+}
+
+Realization realize(const RealizationInput& input, const SlotParams& params) {
+  if (!(params.thickness > 0) || !(params.clearance >= 0) || !(params.kerf >= 0) ||
+      !(params.kerf < params.width()))
+    throw Error(ErrorKind::BadParameter,
+                "the thickness must be > 0, clearance and kerf >= 0, and the kerf narrower than the slot");
+  Search search(input, params);
+  search.run();
+  return search.result();
+}
+
+}  // namespace sliceform

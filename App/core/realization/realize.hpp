@@ -1,0 +1,66 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// Paper realization (§5, Alg. 3): a slot combination for every hinge such that no two
+// patches interlock and no patch falls apart, then the slotted patch shapes and an order to
+// put them together in.
+//
+// Decision (deviation from Alg. 3, in docs/decisions.md): Alg. 3 treats one pair of patches
+// at a time, but a slot chosen for one pair changes the loops another pair sees. We search
+// globally instead. Start with every U-patch slotted up (V down), then while a pair
+// interlocks or a patch is split, try in this order and keep the first tier that lowers
+// (split patches, interlocks, cut-throughs):
+//   1. every up/down combination of the pair's common hinges (the paper's table T),
+//   2. flipping any one other hinge of either patch,
+//   3. a cut-through at one hinge of either patch, never at the last holding hinge between
+//      two patches, so every pin of the certificate keeps an up/down slot.
+// A violation that no move improves is left and counted as remaining.
+#pragma once
+
+#include <vector>
+
+#include "frames/scaffold.hpp"
+#include "realization/slots.hpp"
+#include "slicing/slice_set.hpp"
+
+namespace sliceform {
+
+struct Arrangement;
+
+struct PatchShape {
+  Family family = Family::U;
+  double position = 0;  // along the family's normal, mm
+  Region2d shape;       // in the family's frame, before slots
+};
+
+struct RealizationInput {
+  SliceFrame uFrame, vFrame;
+  std::vector<PatchShape> patches;
+  std::vector<ScaffoldHinge> hinges;
+};
+RealizationInput realizationInput(const Arrangement& arrangement);
+
+struct InterlockStats {
+  int found = 0;        // interlocked hole pairs with the default slots
+  int repaired = 0;     // found - remaining
+  int remaining = 0;
+  int cutThroughs = 0;  // hinges cut through to break a loop
+};
+
+struct Realization {
+  SlotParams params;
+  std::vector<SlotPair> slots;              // per hinge
+  std::vector<std::vector<SlotCut>> cuts;   // per patch, in its frame
+  std::vector<Region2d> slotted;            // per patch: shape minus slots, crumbs dropped
+  InterlockStats interlocks;
+  int splitPatches = 0;                     // patches in more than one piece (must be 0)
+  double minSlotEdgeDistance = 0;           // mm of paper left around slot roots of holding hinges
+  double shortestHinge = 0;                 // mm, over holding hinges
+  std::vector<int> assemblyOrder;           // patch indices
+  bool assemblyChecked = false;             // each patch added is free of the ones placed
+};
+
+Realization realize(const RealizationInput& input, const SlotParams& params);
+
+// The hinges of one patch as planSlots sees them, with the given slot choices.
+std::vector<PatchHinge> patchHinges(const RealizationInput& input, const std::vector<SlotPair>& slots, int patch);
+
+}  // namespace sliceform

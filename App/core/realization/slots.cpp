@@ -1,0 +1,163 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+#include "realization/slots.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace sliceform {
+namespace {
+
+constexpr double kSameLine = 1e-6;  // mm: hinges closer than this share a line
+constexpr double kOvershoot = 1.0;  // mm an open slot runs past the boundary it leaves by
+constexpr double kPi = 3.14159265358979323846;
+
+// The material interval of `intervals` containing y, or the nearest one.
+Interval containing(const std::vector<Interval>& intervals, double y) {
+  Interval best{y, y};
+  double bestGap = std::numeric_limits<double>::infinity();
+  for (const Interval& i : intervals) {
+    const double gap = y < i.lo ? i.lo - y : (y > i.hi ? y - i.hi : 0);
+    if (gap < bestGap) bestGap = gap, best = i;
+  }
+  return best;
+}
+
+// How far an open end at `end` (going in direction dir = +1 up, -1 down) must run so that the
+// whole strip leaves the paper: the strip's side lines may meet paper that reaches further
+// than the centre line does (a slot at the bottom of a valley). Never into paper beyond a gap.
+double openEnd(const Region2d& shape, double x, double halfWidth, double end, int dir) {
+  double reach = end, wall = std::numeric_limits<double>::infinity();
+  for (const double xs : {x - halfWidth, x, x + halfWidth}) {
+    const double inside = end - dir * 1e-3;
+    for (const Interval& i : shape.intervalsOnLine({xs, 0}, {0, 1})) {
+      if (inside >= i.lo && inside <= i.hi) reach = dir > 0 ? std::max(reach, i.hi) : std::min(reach, i.lo);
+      const double start = dir > 0 ? i.lo : -i.hi;  // paper met going outwards
+      if (start > dir * end + 1e-9) wall = std::min(wall, start - dir * end);
+    }
+  }
+  const double run = std::min(std::fabs(reach - end) + kOvershoot, wall / 2);
+  return end + dir * run;
+}
+
+ClipperLib::Path rectangle(double x0, double y0, double x1, double y1) {
+  using R = Region2d;
+  return {{R::toUnits(x0), R::toUnits(y0)},
+          {R::toUnits(x1), R::toUnits(y0)},
+          {R::toUnits(x1), R::toUnits(y1)},
+          {R::toUnits(x0), R::toUnits(y1)}};
+}
+
+ClipperLib::Path disc(double cx, double cy, double r) {
+  ClipperLib::Path out;
+  const int n = 48;
+  for (int k = 0; k < n; ++k) {
+    const double t = 2 * kPi * k / n;
+    out.push_back({Region2d::toUnits(cx + r * std::cos(t)), Region2d::toUnits(cy + r * std::sin(t))});
+  }
+  return out;
+}
+
+}  // namespace
+
+const char* slotName(Slot slot) {
+  switch (slot) {
+    case Slot::Up: return "up";
+    case Slot::Down: return "down";
+    case Slot::Through: return "through";
+    case Slot::None: return "none";
+  }
+  return "none";
+}
+
+Slot uSlot(SlotPair pair) {
+  switch (pair) {
+    case SlotPair::UpDown: return Slot::Up;
+    case SlotPair::DownUp: return Slot::Down;
+    case SlotPair::ThroughNone: return Slot::Through;
+    case SlotPair::NoneThrough: return Slot::None;
+  }
+  return Slot::None;
+}
+
+Slot vSlot(SlotPair pair) {
+  switch (pair) {
+    case SlotPair::UpDown: return Slot::Down;
+    case SlotPair::DownUp: return Slot::Up;
+    case SlotPair::ThroughNone: return Slot::None;
+    case SlotPair::NoneThrough: return Slot::Through;
+  }
+  return Slot::None;
+}
+
+std::vector<SlotCut> planSlots(const Region2d& shape, const std::vector<PatchHinge>& hinges,
+                               const SlotParams& params) {
+  std::vector<SlotCut> cuts;
+  const double halfWidth = params.width() / 2;
+  for (const PatchHinge& h : hinges) {
+    if (h.slot == Slot::None) continue;
+    const Interval paper = containing(shape.intervalsOnLine({h.x, 0}, {0, 1}), (h.w.lo + h.w.hi) / 2);
+    // Neighbours on the same line and the same stretch of paper bound the cut.
+    double above = paper.hi, below = paper.lo;  // for through: segment ends of neighbours
+    double rootAbove = paper.hi, rootBelow = paper.lo;
+    bool closedAbove = false, closedBelow = false, throughAbove = false, throughBelow = false;
+    for (const PatchHinge& o : hinges) {
+      if (&o == &h || std::fabs(o.x - h.x) > kSameLine) continue;
+      if (o.w.lo >= h.w.hi - 1e-9 && o.w.lo < paper.hi) {
+        if (o.root < rootAbove) rootAbove = o.root, closedAbove = true;
+        if (o.w.lo < above) above = o.w.lo, throughAbove = true;
+      }
+      if (o.w.hi <= h.w.lo + 1e-9 && o.w.hi > paper.lo) {
+        if (o.root > rootBelow) rootBelow = o.root, closedBelow = true;
+        if (o.w.hi > below) below = o.w.hi, throughBelow = true;
+      }
+    }
+    SlotCut cut{h.x, {h.root, h.root}, false, false};
+    if (h.slot == Slot::Up) {
+      cut.y.hi = rootAbove;
+      cut.openHi = !closedAbove;
+    } else if (h.slot == Slot::Down) {
+      cut.y.lo = rootBelow;
+      cut.openLo = !closedBelow;
+    } else {
+      cut.y = {below, above};
+      cut.openLo = !throughBelow;
+      cut.openHi = !throughAbove;
+    }
+    if (cut.openHi) cut.y.hi = openEnd(shape, h.x, halfWidth, cut.y.hi, +1);
+    if (cut.openLo) cut.y.lo = openEnd(shape, h.x, halfWidth, cut.y.lo, -1);
+    if (cut.y.hi > cut.y.lo) cuts.push_back(cut);
+  }
+  return cuts;
+}
+
+Region2d slotRegion(const std::vector<SlotCut>& cuts, const SlotParams& params) {
+  ClipperLib::Paths paths;
+  const double r = params.width() / 2;
+  for (const SlotCut& c : cuts) {
+    double lo = c.y.lo, hi = c.y.hi;
+    const bool round = params.end == SlotEnd::Round;
+    if (round && !c.openLo && hi - lo > 2 * r) {
+      lo += r;
+      paths.push_back(disc(c.x, lo, r));
+    }
+    if (round && !c.openHi && hi - lo > 2 * r) {
+      hi -= r;
+      paths.push_back(disc(c.x, hi, r));
+    }
+    paths.push_back(rectangle(c.x - r, lo, c.x + r, hi));
+  }
+  return Region2d::fromPaths(paths, FillRule::NonZero);
+}
+
+Region2d cutSlots(const Region2d& shape, const Region2d& slots, const SlotParams& params, int* pieces) {
+  const Region2d cut = shape.subtract(slots);
+  const double crumb = std::max(0.5, params.width() * params.width());
+  std::vector<Region2d> kept;
+  for (Region2d& piece : cut.components())
+    if (piece.area() >= crumb) kept.push_back(std::move(piece));
+  if (pieces) *pieces = static_cast<int>(kept.size());
+  return kept.size() == 1 ? kept.front() : Region2d::uniteAll(kept);
+}
+
+}  // namespace sliceform

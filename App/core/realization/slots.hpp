@@ -1,0 +1,67 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// Slots (§5): what is cut from a patch at each of its hinges so that it slides onto its
+// partner. A slot is a strip of width thickness + clearance centred on the hinge line; the
+// type says which part of the line it clears:
+//   up / down  from the hinge's root upwards / downwards (+W / -W), to the patch boundary
+//              or to the root of the next hinge on that line, whichever comes first;
+//   through    the whole hinge and the paper around it up to the neighbouring hinges or
+//              the boundary, which breaks a loop of paper (Alg. 3's last resort);
+//   none       nothing: the partner is cut through instead.
+// Coordinates are the patch's frame: x across the hinge lines, y along W.
+#pragma once
+
+#include <vector>
+
+#include "geometry/region2d.hpp"
+#include "geometry/vec.hpp"
+
+namespace sliceform {
+
+enum class Slot { Up, Down, Through, None };
+const char* slotName(Slot slot);  // "up", "down", "through", "none"
+
+// The four valid combinations at one hinge, (slot of the U-patch, slot of the V-patch).
+enum class SlotPair { UpDown, DownUp, ThroughNone, NoneThrough };
+Slot uSlot(SlotPair pair);
+Slot vSlot(SlotPair pair);
+
+enum class SlotEnd { Square, Round };
+
+struct SlotParams {
+  double thickness = 0.3;  // mm of material (0.3 mm card)
+  double clearance = 0.2;  // mm added so the partner slides in
+  double kerf = 0;         // mm the cutter removes; outputs compensate half of it per side
+  SlotEnd end = SlotEnd::Square;
+  double width() const { return thickness + clearance; }
+};
+
+// One hinge as a patch sees it.
+struct PatchHinge {
+  double x = 0;    // the hinge line
+  Interval w;      // the hinge segment along the line
+  double root = 0; // where up/down slots start: middle of the grip, or of the segment
+  Slot slot = Slot::None;
+};
+
+// The strip cleared at one hinge: x in [x - width/2, x + width/2], y in [y.lo, y.hi]. An
+// open end runs out of the paper (past the boundary); a closed end is inside the paper
+// and gets a round end when asked.
+struct SlotCut {
+  double x = 0;
+  Interval y;
+  bool openLo = false, openHi = false;
+};
+
+// The strips to cut for the hinges of one patch (one per hinge that is not `none`).
+std::vector<SlotCut> planSlots(const Region2d& shape, const std::vector<PatchHinge>& hinges,
+                               const SlotParams& params);
+
+// The region the strips clear, with round closed ends when asked.
+Region2d slotRegion(const std::vector<SlotCut>& cuts, const SlotParams& params);
+
+// The slotted patch: shape minus its slots. Crumbs (pieces smaller than a slot-wide square
+// or 0.5 mm², whichever is larger) fall out when cut and are dropped; `pieces` is set to
+// the number of pieces that remain, which must be 1.
+Region2d cutSlots(const Region2d& shape, const Region2d& slots, const SlotParams& params, int* pieces);
+
+}  // namespace sliceform

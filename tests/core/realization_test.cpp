@@ -1,0 +1,179 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// Paper realization (§5): slot geometry, the interlock test of Prop. 3, and Alg. 3's
+// repairs, on hand-made patches and on arranged solids.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "arrangement/arrange.hpp"
+#include "frames/hinge_table.hpp"
+#include "model/model.hpp"
+#include "realization/interlock.hpp"
+#include "realization/realize.hpp"
+#include "test_support.hpp"
+
+namespace sliceform {
+namespace {
+
+using test::makeHollowSphere;
+using test::makeTorus;
+
+Region2d::Loop circle(double cx, double cy, double r, bool clockwise = false) {
+  Region2d::Loop out;
+  const int n = 180;
+  for (int k = 0; k < n; ++k) {
+    const double t = 2 * M_PI * (clockwise ? n - k : k) / n;
+    out.push_back({cx + r * std::cos(t), cy + r * std::sin(t)});
+  }
+  return out;
+}
+
+Region2d annulus(double cx, double cy, double inner, double outer) {
+  return Region2d::fromLoops({circle(cx, cy, outer), circle(cx, cy, inner)}, FillRule::EvenOdd);
+}
+
+Region2d rect(double x0, double y0, double x1, double y1) {
+  return Region2d::fromLoops({{{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}}});
+}
+
+// A hand-made realization input: U-patches and V-patches given by shape and position,
+// with every hinge segment found on the common lines (all of them holding).
+RealizationInput handMade(const std::vector<PatchShape>& patches) {
+  RealizationInput in;
+  in.uFrame = makeSliceFrame({1, 0, 0}, {0, 0, 1});
+  in.vFrame = makeSliceFrame({0, 1, 0}, {0, 0, 1});
+  in.patches = patches;
+  for (int a = 0; a < static_cast<int>(patches.size()); ++a) {
+    if (patches[a].family != Family::U) continue;
+    for (int b = 0; b < static_cast<int>(patches.size()); ++b) {
+      if (patches[b].family != Family::V) continue;
+      const double xa = lineX(in.uFrame, in.vFrame, patches[b].position);
+      const double xb = lineX(in.vFrame, in.uFrame, patches[a].position);
+      for (const Interval& w : intersectIntervals(patches[a].shape.intervalsOnLine({xa, 0}, {0, 1}),
+                                                  patches[b].shape.intervalsOnLine({xb, 0}, {0, 1})))
+        in.hinges.push_back({a, b, w, true, w});
+    }
+  }
+  return in;
+}
+
+// Paper Fig. 3: two rings at right angles through each other, joined where they cross.
+// Slotting both joints the same way (U up, V down) leaves them linked.
+TEST(Interlock, CrossedRingsAreDetectedAndRepaired) {
+  const RealizationInput in = handMade({{Family::U, 0, annulus(0, 0, 15, 25)},
+                                        {Family::V, 0, annulus(0, 0, 15, 25)}});
+  ASSERT_EQ(in.hinges.size(), 2u);
+  const Realization r = realize(in, SlotParams{});
+  EXPECT_GT(r.interlocks.found, 0);
+  EXPECT_EQ(r.interlocks.remaining, 0);
+  EXPECT_EQ(r.interlocks.repaired, r.interlocks.found);
+  EXPECT_EQ(r.interlocks.cutThroughs, 0);
+  EXPECT_EQ(r.splitPatches, 0);
+  EXPECT_NE(r.slots[0], r.slots[1]) << "one joint slotted each way unlinks the rings";
+  EXPECT_TRUE(r.assemblyChecked);
+}
+
+// Two rings linked without touching (Prop. 3 counts pairs that share no hinge too). No slot
+// between them can help; a cut-through where a third patch crosses ring A breaks it.
+TEST(Interlock, LinkedRingsNeedACutThrough) {
+  const RealizationInput in = handMade({{Family::U, 0, annulus(0, 0, 20, 30)},
+                                        {Family::V, 0, annulus(0, 25, 20, 30)},
+                                        {Family::V, 10, rect(-5, -40, 5, 40)}});
+  ASSERT_EQ(in.hinges.size(), 2u) << "A meets C twice on the line x = 10, B not at all";
+  const HoleLoops a = holeLoops(in.patches[0].shape, 0), b = holeLoops(in.patches[1].shape, 0);
+  EXPECT_EQ(interlockCount(a, in.uFrame, b, in.vFrame), 1);
+  const Realization r = realize(in, SlotParams{});
+  EXPECT_EQ(r.interlocks.found, 1);
+  EXPECT_EQ(r.interlocks.remaining, 0);
+  EXPECT_EQ(r.interlocks.cutThroughs, 1);
+  EXPECT_EQ(r.splitPatches, 0);
+  EXPECT_EQ(r.slotted[0].holeCount(), 0) << "ring A is open now";
+  EXPECT_EQ(r.slotted[0].components().size(), 1u);
+}
+
+// The slots of one hinge: the U-patch cleared above the root, the V-patch below, each
+// exactly thickness + clearance wide, and paper left where the other has its slot.
+TEST(Slots, WidthIsThicknessPlusClearance) {
+  const RealizationInput in = handMade({{Family::U, 0, rect(-20, 0, 20, 40)},
+                                        {Family::V, 5, rect(-20, 0, 20, 40)}});
+  ASSERT_EQ(in.hinges.size(), 1u);
+  SlotParams params;
+  params.thickness = 3;  // plywood
+  params.clearance = 0.15;
+  const Realization r = realize(in, params);
+  ASSERT_EQ(r.slots[0], SlotPair::UpDown);
+  const double xu = lineX(in.uFrame, in.vFrame, 5), xv = lineX(in.vFrame, in.uFrame, 0);
+  const auto gaps = [](const Region2d& region, double y) {
+    const std::vector<Interval> row = region.intervalsOnLine({0, y}, {1, 0});
+    std::vector<Interval> out;
+    for (size_t k = 0; k + 1 < row.size(); ++k) out.push_back({row[k].hi, row[k + 1].lo});
+    return out;
+  };
+  const auto up = gaps(r.slotted[0], 30), below = gaps(r.slotted[0], 10);
+  ASSERT_EQ(up.size(), 1u);
+  EXPECT_NEAR(up[0].hi - up[0].lo, 3.15, 1e-4);
+  EXPECT_NEAR((up[0].lo + up[0].hi) / 2, xu, 1e-4);
+  EXPECT_TRUE(below.empty());
+  const auto down = gaps(r.slotted[1], 10);
+  ASSERT_EQ(down.size(), 1u);
+  EXPECT_NEAR(down[0].hi - down[0].lo, 3.15, 1e-4);
+  EXPECT_NEAR((down[0].lo + down[0].hi) / 2, xv, 1e-4);
+  EXPECT_TRUE(gaps(r.slotted[1], 30).empty());
+  // The slots meet at the root, in the middle of the hinge.
+  EXPECT_NEAR(r.slotted[0].bounds().max.y, 40, 1e-6);
+  const std::vector<Interval> uOnLine = r.slotted[0].intervalsOnLine({xu, 0}, {0, 1});
+  ASSERT_EQ(uOnLine.size(), 1u);
+  EXPECT_NEAR(uOnLine[0].hi, 20, 1e-4);
+  EXPECT_EQ(r.splitPatches, 0);
+}
+
+TEST(Slots, RoundEndsStayWithinTheSlot) {
+  const RealizationInput in = handMade({{Family::U, 0, rect(-20, 0, 20, 40)},
+                                        {Family::V, 5, rect(-20, 0, 20, 40)}});
+  SlotParams square, round;
+  round.end = SlotEnd::Round;
+  const Realization a = realize(in, square), b = realize(in, round);
+  const double xu = lineX(in.uFrame, in.vFrame, 5);
+  // The rounded slot reaches the root on its centre line, and leaves the corners.
+  EXPECT_NEAR(b.slotted[0].intervalsOnLine({xu, 0}, {0, 1})[0].hi, 20, 1e-3);
+  EXPECT_GT(b.slotted[0].area(), a.slotted[0].area());
+  EXPECT_LT(b.slotted[0].area() - a.slotted[0].area(), round.width() * round.width());
+}
+
+// Slotted patches of arranged solids: no interlock left, no patch in pieces, and the paper
+// promised beside each holding slot is there.
+void expectRealizable(const TopoDS_Shape& shape, int slices = 48) {
+  ArrangementParams params;
+  params.slices = slices;
+  SlotParams slots;
+  params.hinges.slotWidth = slots.width();
+  const Arrangement a = arrange(modelFromShape(shape, "test solid"), params);
+  ASSERT_TRUE(a.certificate.stable);
+  const Realization r = realize(realizationInput(a), slots);
+  EXPECT_EQ(r.interlocks.remaining, 0);
+  EXPECT_EQ(r.splitPatches, 0);
+  for (const Region2d& p : r.slotted) EXPECT_EQ(p.components().size(), 1u);
+  EXPECT_GE(r.minSlotEdgeDistance, params.hinges.minSlotEdgeDistance - 0.01);
+  EXPECT_GE(r.shortestHinge, params.hinges.minHingeLength);
+  EXPECT_TRUE(r.assemblyChecked);
+  EXPECT_EQ(r.assemblyOrder.size(), a.scaffold.patches.size());
+  // A holding hinge keeps an up/down pair, so the certificate's pins are all still there.
+  for (size_t h = 0; h < a.scaffold.hinges.size(); ++h) {
+    const ScaffoldHinge& hinge = a.scaffold.hinges[h];
+    if (!hinge.holds) continue;
+    bool pinned = false;
+    for (size_t o = 0; o < a.scaffold.hinges.size(); ++o) {
+      const ScaffoldHinge& other = a.scaffold.hinges[o];
+      pinned |= other.u == hinge.u && other.v == hinge.v && other.holds &&
+                (r.slots[o] == SlotPair::UpDown || r.slots[o] == SlotPair::DownUp);
+    }
+    EXPECT_TRUE(pinned);
+  }
+}
+
+TEST(RealizeSolids, HollowSphere) { expectRealizable(makeHollowSphere(60, 45)); }
+TEST(RealizeSolids, Torus) { expectRealizable(makeTorus(60, 20)); }
+TEST(RealizeSolids, BoxWithWindows) { expectRealizable(test::makeBoxWithWindows(120, 80, 60, 6)); }
+
+}  // namespace
+}  // namespace sliceform
