@@ -131,22 +131,30 @@ std::vector<SlotCut> planSlots(const Region2d& shape, const std::vector<PatchHin
   return cuts;
 }
 
-Region2d slotRegion(const std::vector<SlotCut>& cuts, const SlotParams& params) {
-  ClipperLib::Paths paths;
+SlotShapes slotShapes(const std::vector<SlotCut>& cuts, const SlotParams& params) {
+  SlotShapes out;
   const double r = params.width() / 2;
+  const bool round = params.end == SlotEnd::Round;
   for (const SlotCut& c : cuts) {
     double lo = c.y.lo, hi = c.y.hi;
-    const bool round = params.end == SlotEnd::Round;
     if (round && !c.openLo && hi - lo > 2 * r) {
       lo += r;
-      paths.push_back(disc(c.x, lo, r));
+      out.discs.push_back({{c.x, lo}, r});
     }
     if (round && !c.openHi && hi - lo > 2 * r) {
       hi -= r;
-      paths.push_back(disc(c.x, hi, r));
+      out.discs.push_back({{c.x, hi}, r});
     }
-    paths.push_back(rectangle(c.x - r, lo, c.x + r, hi));
+    out.rectangles.push_back({{c.x - r, lo}, {c.x + r, hi}, false});
   }
+  return out;
+}
+
+Region2d slotRegion(const std::vector<SlotCut>& cuts, const SlotParams& params) {
+  const SlotShapes shapes = slotShapes(cuts, params);
+  ClipperLib::Paths paths;
+  for (const Box2& b : shapes.rectangles) paths.push_back(rectangle(b.min.x, b.min.y, b.max.x, b.max.y));
+  for (const Disc& d : shapes.discs) paths.push_back(disc(d.centre.x, d.centre.y, d.radius));
   return Region2d::fromPaths(paths, FillRule::NonZero);
 }
 

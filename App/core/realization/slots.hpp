@@ -56,7 +56,19 @@ struct SlotCut {
 std::vector<SlotCut> planSlots(const Region2d& shape, const std::vector<PatchHinge>& hinges,
                                const SlotParams& params);
 
-// The region the strips clear, with round closed ends when asked.
+// The strips as plain shapes (rectangles, and discs for round closed ends), for the
+// polygon search and the exact faces alike.
+struct Disc {
+  Vec2 centre;
+  double radius = 0;
+};
+struct SlotShapes {
+  std::vector<Box2> rectangles;
+  std::vector<Disc> discs;
+};
+SlotShapes slotShapes(const std::vector<SlotCut>& cuts, const SlotParams& params);
+
+// The region the strips clear.
 Region2d slotRegion(const std::vector<SlotCut>& cuts, const SlotParams& params);
 
 // The slotted patch: shape minus its slots. Crumbs (pieces smaller than a slot-wide square

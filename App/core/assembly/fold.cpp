@@ -1,0 +1,100 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+#include "assembly/fold.hpp"
+
+#include <BRepTools.hxx>
+#include <BRep_Builder.hxx>
+#include <IFSelect_ReturnStatus.hxx>
+#include <Interface_Static.hxx>
+#include <Message.hxx>
+#include <Message_Messenger.hxx>
+#include <Message_Printer.hxx>
+#include <STEPControl_Writer.hxx>
+#include <TopoDS_Compound.hxx>
+#include <gp_Ax1.hxx>
+
+#include <cmath>
+#include <mutex>
+
+#include "support/atomic_file.hpp"
+#include "support/error.hpp"
+#include "support/occt_guard.hpp"
+
+namespace sliceform {
+namespace {
+
+gp_Vec vec(const Vec3& v) {
+  return {v.x, v.y, v.z};
+}
+
+bool endsWith(const std::string& s, const std::string& tail) {
+  if (s.size() < tail.size()) return false;
+  std::string end = s.substr(s.size() - tail.size());
+  for (char& c : end) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return end == tail;
+}
+
+}  // namespace
+
+gp_Trsf foldTransform(const Arrangement& a, int patch, double thetaDegrees) {
+  if (!(thetaDegrees > 0 && thetaDegrees <= 90))
+    throw Error(ErrorKind::BadParameter, "the fold angle must be in (0, 90] degrees");
+  const double theta = thetaDegrees * M_PI / 180;
+  const ScaffoldPatch& p = a.scaffold.patches[patch];
+  const gp_Vec u = vec(a.u.frame.normal), v = vec(a.v.frame.normal), w = vec(a.u.frame.yAxis);
+  gp_Trsf t;
+  if (p.family == Family::U) {
+    t.SetTranslation(u * (p.position * (std::sin(theta) - 1)) + v * (p.position * std::cos(theta)));
+  } else {
+    const gp_Vec through = v * p.position;
+    t.SetRotation(gp_Ax1(gp_Pnt(through.XYZ()), gp_Dir(w)), M_PI / 2 - theta);
+  }
+  return t;
+}
+
+TopoDS_Shape assemble(const Arrangement& a, const std::vector<PatchFace>& patches, double thetaDegrees) {
+  TopoDS_Compound all;
+  BRep_Builder builder;
+  builder.MakeCompound(all);
+  for (size_t k = 0; k < patches.size(); ++k)
+    if (!patches[k].shape.IsNull())
+      builder.Add(all, patches[k].shape.Moved(TopLoc_Location(foldTransform(a, static_cast<int>(k), thetaDegrees))));
+  return all;
+}
+
+void writeShape(const TopoDS_Shape& shape, const std::string& path) {
+  const bool step = endsWith(path, ".step") || endsWith(path, ".stp");
+  if (!step && !endsWith(path, ".brep"))
+    throw Error(ErrorKind::BadParameter, path + ": the 3D assembly is written as .step, .stp or .brep");
+  writeAtomically(path, [&](const std::string& temporary) {
+    occtGuard("writing the assembly", [&] {
+      if (!step) {
+        if (!BRepTools::Write(shape, temporary.c_str())) throw Error(ErrorKind::Io, "cannot write " + path);
+        return;
+      }
+      // The STEP writer's settings are process-wide statics.
+      static std::mutex lock;
+      std::lock_guard<std::mutex> hold(lock);
+      // The writer prints transfer statistics on stdout, which is the CLI's summary.
+      const Message_SequenceOfPrinters& printers = Message::DefaultMessenger()->Printers();
+      std::vector<Message_Gravity> levels;
+      for (int i = 1; i <= printers.Length(); ++i) {
+        levels.push_back(printers(i)->GetTraceLevel());
+        printers(i)->SetTraceLevel(Message_Fail);
+      }
+      struct Restore {
+        const Message_SequenceOfPrinters& printers;
+        std::vector<Message_Gravity>& levels;
+        ~Restore() {
+          for (int i = 1; i <= printers.Length(); ++i) printers(i)->SetTraceLevel(levels[i - 1]);
+        }
+      } restore{printers, levels};
+      STEPControl_Writer writer;
+      Interface_Static::SetCVal("write.step.unit", "MM");
+      if (writer.Transfer(shape, STEPControl_AsIs) != IFSelect_RetDone ||
+          writer.Write(temporary.c_str()) != IFSelect_RetDone)
+        throw Error(ErrorKind::Io, "cannot write " + path);
+    });
+  });
+}
+
+}  // namespace sliceform

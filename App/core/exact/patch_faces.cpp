@@ -1,0 +1,262 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+#include "exact/patch_faces.hpp"
+
+#include <BRepAlgoAPI_Cut.hxx>
+#include <BRepAlgoAPI_Fuse.hxx>
+#include <BRepBuilderAPI_MakeEdge.hxx>
+#include <BRepBuilderAPI_MakeFace.hxx>
+#include <BRepBuilderAPI_MakePolygon.hxx>
+#include <BRepBuilderAPI_MakeWire.hxx>
+#include <BRepGProp.hxx>
+#include <BRepOffsetAPI_MakeOffset.hxx>
+#include <BRep_Builder.hxx>
+#include <GProp_GProps.hxx>
+#include <ShapeUpgrade_UnifySameDomain.hxx>
+#include <TopExp_Explorer.hxx>
+#include <TopTools_ListOfShape.hxx>
+#include <TopoDS.hxx>
+#include <TopoDS_Compound.hxx>
+#include <gp_Ax3.hxx>
+#include <gp_Circ.hxx>
+#include <gp_Pln.hxx>
+
+#include <algorithm>
+#include <map>
+#include <sstream>
+
+#include "slicing/brep_slicer.hpp"
+#include "support/error.hpp"
+#include "support/occt_guard.hpp"
+#include "support/parallel.hpp"
+
+namespace sliceform {
+namespace {
+
+gp_Pnt point(const SliceFrame& frame, Vec2 q, double position) {
+  const Vec3 p = frame.to3d(q, position);
+  return {p.x, p.y, p.z};
+}
+
+gp_Pln plane(const SliceFrame& frame, double position) {
+  const Vec3 o = frame.normal * position;
+  return gp_Pln(gp_Ax3(gp_Pnt(o.x, o.y, o.z), gp_Dir(frame.normal.x, frame.normal.y, frame.normal.z),
+                       gp_Dir(frame.xAxis.x, frame.xAxis.y, frame.xAxis.z)));
+}
+
+TopoDS_Wire polygonWire(const Region2d::Loop& loop, const SliceFrame& frame, double position) {
+  BRepBuilderAPI_MakePolygon polygon;
+  for (const Vec2& q : loop) polygon.Add(point(frame, q, position));
+  polygon.Close();
+  if (!polygon.IsDone()) throw Error(ErrorKind::Geometry, "cannot build a polygon wire");
+  return polygon.Wire();
+}
+
+TopoDS_Compound compound(const std::vector<TopoDS_Shape>& shapes) {
+  TopoDS_Compound c;
+  BRep_Builder builder;
+  builder.MakeCompound(c);
+  for (const TopoDS_Shape& s : shapes) builder.Add(c, s);
+  return c;
+}
+
+std::vector<TopoDS_Shape> faces(const TopoDS_Shape& shape) {
+  std::vector<TopoDS_Shape> out;
+  for (TopExp_Explorer it(shape, TopAbs_FACE); it.More(); it.Next()) out.push_back(it.Current());
+  return out;
+}
+
+double area(const TopoDS_Shape& shape) {
+  GProp_GProps props;
+  BRepGProp::SurfaceProperties(shape, props);
+  return props.Mass();
+}
+
+// A Boolean of planar faces (fuse when `cutting` is false), then coplanar pieces merged so
+// that one patch is one face again and arcs split by the Boolean are whole again.
+TopoDS_Shape boolean(const std::vector<TopoDS_Shape>& arguments, const std::vector<TopoDS_Shape>& tools,
+                     bool cutting) {
+  TopTools_ListOfShape args, tls;
+  for (const TopoDS_Shape& s : arguments) args.Append(s);
+  for (const TopoDS_Shape& s : tools) tls.Append(s);
+  auto run = [&](BRepAlgoAPI_BooleanOperation& op) {
+    op.SetArguments(args);
+    op.SetTools(tls);
+    op.SetNonDestructive(Standard_True);  // slice faces are shared between patches
+    op.SetRunParallel(Standard_False);
+    op.Build();
+    if (!op.IsDone() || op.HasErrors()) {
+      std::ostringstream report;
+      op.DumpErrors(report);
+      throw Error(ErrorKind::Geometry, std::string(cutting ? "cutting slots" : "fusing sections") +
+                                           " failed: " + report.str());
+    }
+    ShapeUpgrade_UnifySameDomain unify(op.Shape(), Standard_True, Standard_True, Standard_False);
+    unify.Build();
+    return unify.Shape();
+  };
+  if (cutting) {
+    BRepAlgoAPI_Cut op;
+    return run(op);
+  }
+  BRepAlgoAPI_Fuse op;
+  return run(op);
+}
+
+// The slot strips of one patch as faces on its plane.
+std::vector<TopoDS_Shape> slotFaces(const SlotShapes& shapes, const SliceFrame& frame, double position) {
+  std::vector<TopoDS_Shape> out;
+  const gp_Pln pln = plane(frame, position);
+  for (const Box2& b : shapes.rectangles) {
+    const Region2d::Loop loop{{b.min.x, b.min.y}, {b.max.x, b.min.y}, {b.max.x, b.max.y}, {b.min.x, b.max.y}};
+    out.push_back(BRepBuilderAPI_MakeFace(pln, polygonWire(loop, frame, position)).Face());
+  }
+  for (const Disc& d : shapes.discs) {
+    gp_Ax2 axis(point(frame, d.centre, position), pln.Axis().Direction(), pln.XAxis().Direction());
+    const TopoDS_Edge edge = BRepBuilderAPI_MakeEdge(gp_Circ(axis, d.radius)).Edge();
+    out.push_back(BRepBuilderAPI_MakeFace(pln, BRepBuilderAPI_MakeWire(edge).Wire()).Face());
+  }
+  return out;
+}
+
+// The exact cross-section of one cylinder on the plane at position 0 of its frame.
+TopoDS_Shape exactSection(const Cylinder& cylinder, const std::map<int, ExactSlice>& slices,
+                          const SliceFrame& frame, double meshDeflection) {
+  const double deflection = exactDeflection(meshDeflection);
+  // The cylinder's own faces: a slice may hold pieces of other parts of the model.
+  const Region2d near = cylinder.section.offset(std::max(4 * meshDeflection, 0.05));
+  std::vector<TopoDS_Shape> own;
+  for (int k = cylinder.firstSlice; k <= cylinder.lastSlice; ++k) {
+    const ExactSlice& s = slices.at(k);
+    if (s.faces.IsNull()) continue;
+    gp_Trsf onto;
+    onto.SetTranslation(gp_Vec(-frame.normal.x * s.position, -frame.normal.y * s.position,
+                               -frame.normal.z * s.position));
+    for (const TopoDS_Shape& f : faces(s.faces)) {
+      const Region2d poly = polygoniseFaces(f, frame, deflection);
+      if (poly.intersect(near).area() >= 0.5 * poly.area()) own.push_back(f.Moved(TopLoc_Location(onto)));
+    }
+  }
+  TopoDS_Shape fused = own.size() > 1 ? boolean({own.front()}, {own.begin() + 1, own.end()}, false)
+                                      : (own.empty() ? TopoDS_Shape() : own.front());
+  // Material of the polygon section the exact slices lack (merged-in branches): keep it, as
+  // polygons, so every hinge found on the polygons is on paper.
+  const double opening = std::max(4 * meshDeflection, 0.05);
+  Region2d missing = cylinder.section;
+  if (!fused.IsNull()) missing = missing.subtract(polygoniseFaces(fused, frame, deflection));
+  missing = missing.offset(-opening).offset(2 * opening).intersect(cylinder.section.offset(opening));
+  if (!missing.empty()) {
+    const TopoDS_Shape extra = facesFromRegion(missing, frame, 0);
+    fused = fused.IsNull() ? extra : boolean({fused}, faces(extra), false);
+  }
+  return fused;
+}
+
+}  // namespace
+
+TopoDS_Shape facesFromRegion(const Region2d& region, const SliceFrame& frame, double position) {
+  std::vector<TopoDS_Shape> out;
+  const gp_Pln pln = plane(frame, position);
+  for (const Region2d& piece : region.components()) {
+    std::vector<Region2d::Loop> loops = piece.loops();  // outer (counter-clockwise) first
+    std::stable_partition(loops.begin(), loops.end(), [](const Region2d::Loop& l) {
+      double a = 0;
+      for (size_t i = 0; i < l.size(); ++i)
+        a += l[i].x * l[(i + 1) % l.size()].y - l[(i + 1) % l.size()].x * l[i].y;
+      return a > 0;
+    });
+    BRepBuilderAPI_MakeFace face(pln, polygonWire(loops.front(), frame, position));
+    // Holes run clockwise in the frame, whose normal is the plane's: OCCT's hole sense.
+    for (size_t k = 1; k < loops.size(); ++k) face.Add(polygonWire(loops[k], frame, position));
+    if (!face.IsDone()) throw Error(ErrorKind::Geometry, "cannot build a patch face from its polygon");
+    out.push_back(face.Face());
+  }
+  return out.size() == 1 ? out.front() : compound(out);
+}
+
+std::vector<PatchFace> exactPatches(const Model& model, const Arrangement& a, const Realization& r) {
+  const Scaffold& scaffold = a.scaffold;
+  std::vector<PatchFace> out(scaffold.patches.size());
+  const bool exact = model.kind == SourceKind::Brep && !model.shape.IsNull();
+  // Exact sections, each needed slice cut once.
+  std::map<int, ExactSlice> uSlices, vSlices;
+  std::map<std::pair<int, int>, TopoDS_Shape> sections;  // (family, cylinder) at position 0
+  if (exact) {
+    for (const Family f : {Family::U, Family::V}) {
+      const SliceSet& set = f == Family::U ? a.u : a.v;
+      const auto& cylinders = f == Family::U ? a.uCylinders : a.vCylinders;
+      std::vector<int> needed;
+      for (const ScaffoldPatch& p : scaffold.patches) {
+        if (p.family != f) continue;
+        for (int k = cylinders[p.cylinder].firstSlice; k <= cylinders[p.cylinder].lastSlice; ++k)
+          needed.push_back(k);
+      }
+      std::sort(needed.begin(), needed.end());
+      needed.erase(std::unique(needed.begin(), needed.end()), needed.end());
+      std::vector<double> positions;
+      for (int k : needed) positions.push_back(set.slices[k].position);
+      const std::vector<ExactSlice> cut =
+          sliceBrep(model.shape, set.frame, positions, exactDeflection(model.meshDeflection));
+      auto& into = f == Family::U ? uSlices : vSlices;
+      for (size_t i = 0; i < needed.size(); ++i) into[needed[i]] = cut[i];
+    }
+    std::vector<std::pair<int, int>> keys;
+    for (const ScaffoldPatch& p : scaffold.patches) keys.push_back({p.family == Family::U ? 0 : 1, p.cylinder});
+    std::sort(keys.begin(), keys.end());
+    keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
+    std::vector<TopoDS_Shape> built(keys.size());
+    parallelFor(keys.size(), [&](size_t i) {
+      const bool isU = keys[i].first == 0;
+      const Cylinder& c = (isU ? a.uCylinders : a.vCylinders)[keys[i].second];
+      built[i] = occtGuard("building an exact patch", [&] {
+        return exactSection(c, isU ? uSlices : vSlices, isU ? a.u.frame : a.v.frame, model.meshDeflection);
+      });
+    });
+    for (size_t i = 0; i < keys.size(); ++i) sections[keys[i]] = built[i];
+  }
+
+  const double crumb = std::max(0.5, r.params.width() * r.params.width());
+  parallelFor(scaffold.patches.size(), [&](size_t k) {
+    const ScaffoldPatch& p = scaffold.patches[k];
+    const SliceFrame& frame = p.family == Family::U ? a.u.frame : a.v.frame;
+    PatchFace& pf = out[k];
+    pf.exact = exact;
+    if (!exact) {
+      pf.shape = facesFromRegion(r.slotted[k], frame, p.position);
+      pf.outline = r.slotted[k];
+      pf.pieces = static_cast<int>(r.slotted[k].components().size());
+      return;
+    }
+    occtGuard("cutting the slots of a patch", [&] {
+      gp_Trsf onto;
+      onto.SetTranslation(gp_Vec(frame.normal.x * p.position, frame.normal.y * p.position,
+                                 frame.normal.z * p.position));
+      const TopoDS_Shape section =
+          sections.at({p.family == Family::U ? 0 : 1, p.cylinder}).Moved(TopLoc_Location(onto));
+      const std::vector<TopoDS_Shape> tools = slotFaces(slotShapes(r.cuts[k], r.params), frame, p.position);
+      const TopoDS_Shape slotted = tools.empty() ? section : boolean(faces(section), tools, true);
+      std::vector<TopoDS_Shape> kept;
+      for (const TopoDS_Shape& f : faces(slotted))
+        if (area(f) >= crumb) kept.push_back(f);
+      pf.pieces = static_cast<int>(kept.size());
+      pf.shape = kept.size() == 1 ? kept.front() : compound(kept);
+      pf.outline = polygoniseFaces(pf.shape, frame, kOutlineDeflection);
+    });
+  });
+  return out;
+}
+
+TopoDS_Shape kerfCompensated(const TopoDS_Shape& shape, double kerf) {
+  if (kerf <= 0) return shape;
+  return occtGuard("compensating the kerf", [&] {
+    std::vector<TopoDS_Shape> out;
+    for (const TopoDS_Shape& f : faces(shape)) {
+      BRepOffsetAPI_MakeOffset offset(TopoDS::Face(f), GeomAbs_Arc);
+      offset.Perform(kerf / 2);
+      if (!offset.IsDone()) throw Error(ErrorKind::Geometry, "cannot offset a patch outline by the kerf");
+      out.push_back(offset.Shape());
+    }
+    return out.size() == 1 ? out.front() : compound(out);
+  });
+}
+
+}  // namespace sliceform

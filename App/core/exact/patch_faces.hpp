@@ -1,0 +1,44 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// Exact patch geometry: the faces that get cut. The search stages work on polygons; here
+// every patch is rebuilt for output, on its plane in 3D at the popped-up pose:
+//  - BRep sources: the exact sections of the solid at each slice of the patch's cylinder
+//    (only the faces of the cylinder's part), moved onto the patch plane, fused and cleaned
+//    with ShapeUpgrade_UnifySameDomain, so circles stay circles. Pieces the polygon section
+//    has and the slices do not (small branches the Reeb simplification merged in from other
+//    slices) are added as polygons;
+//  - mesh sources: the polygon section itself;
+// then the slots are cut (rectangles, and circles for round ends).
+#pragma once
+
+#include <TopoDS_Shape.hxx>
+
+#include <vector>
+
+#include "arrangement/arrange.hpp"
+#include "model/model.hpp"
+#include "realization/realize.hpp"
+
+namespace sliceform {
+
+struct PatchFace {
+  TopoDS_Shape shape;  // planar face(s) in 3D; one face unless the patch fell apart
+  Region2d outline;    // the same, polygonised finely, in the family frame's 2D coordinates
+  int pieces = 0;      // faces after slotting (crumbs dropped): must be 1
+  bool exact = false;  // built from exact sections (BRep source)
+};
+
+std::vector<PatchFace> exactPatches(const Model& model, const Arrangement& arrangement,
+                                    const Realization& realization);
+
+// Planar faces of a region on the plane at `position` of `frame`, one per component.
+TopoDS_Shape facesFromRegion(const Region2d& region, const SliceFrame& frame, double position);
+
+// The kerf-compensated cut path of a patch: its boundary wires moved away from the paper
+// by half the kerf (outer loops grow, holes and slots shrink), arcs kept as arcs. The
+// result is wires: what the cutter follows, not paper.
+TopoDS_Shape kerfCompensated(const TopoDS_Shape& faces, double kerf);
+
+// How far the output polygons may stray from the exact edges, mm.
+constexpr double kOutlineDeflection = 0.01;
+
+}  // namespace sliceform

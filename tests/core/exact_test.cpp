@@ -1,0 +1,169 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// Exact patch faces and the folded assembly: arcs stay arcs, slots have their width in the
+// exact faces, and the folded sliceform's patches meet only at their hinges.
+#include <gtest/gtest.h>
+
+#include <BRepAdaptor_Curve.hxx>
+#include <BRepAlgoAPI_Section.hxx>
+#include <BRepBndLib.hxx>
+#include <BRepGProp.hxx>
+#include <Bnd_Box.hxx>
+#include <GProp_GProps.hxx>
+#include <TopExp_Explorer.hxx>
+#include <TopoDS.hxx>
+
+#include "arrangement/arrange.hpp"
+#include "assembly/fold.hpp"
+#include "exact/patch_faces.hpp"
+#include "realization/realize.hpp"
+#include "support/error.hpp"
+#include "test_support.hpp"
+
+namespace sliceform {
+namespace {
+
+struct Design {
+  Model model;
+  Arrangement arrangement;
+  Realization realization;
+  std::vector<PatchFace> faces;
+};
+
+Design design(const Model& model, int slices = 32) {
+  Design d{model, {}, {}, {}};
+  ArrangementParams params;
+  params.slices = slices;
+  params.hinges.slotWidth = SlotParams{}.width();
+  d.arrangement = arrange(d.model, params);
+  d.realization = realize(realizationInput(d.arrangement), SlotParams{});
+  d.faces = exactPatches(d.model, d.arrangement, d.realization);
+  return d;
+}
+
+int edgesOfType(const TopoDS_Shape& shape, GeomAbs_CurveType type) {
+  int n = 0;
+  for (TopExp_Explorer it(shape, TopAbs_EDGE); it.More(); it.Next())
+    n += BRepAdaptor_Curve(TopoDS::Edge(it.Current())).GetType() == type ? 1 : 0;
+  return n;
+}
+
+double length(const TopoDS_Shape& shape) {
+  GProp_GProps props;
+  BRepGProp::LinearProperties(shape, props);
+  return props.Mass();
+}
+
+TEST(ExactPatches, SphereKeepsCircularArcsAndSlotWidth) {
+  const Design d = design(modelFromShape(test::makeSphere(60), "sphere"));
+  ASSERT_FALSE(d.faces.empty());
+  const SlotParams params;
+  int slotsMeasured = 0;
+  for (size_t k = 0; k < d.faces.size(); ++k) {
+    const PatchFace& f = d.faces[k];
+    EXPECT_TRUE(f.exact);
+    EXPECT_EQ(f.pieces, 1);
+    EXPECT_GT(edgesOfType(f.shape, GeomAbs_Circle), 0) << "patch " << k;
+    EXPECT_EQ(edgesOfType(f.shape, GeomAbs_BSplineCurve), 0);
+    // Every straight edge is a slot wall or end, never a chord of the circle.
+    for (TopExp_Explorer it(f.shape, TopAbs_EDGE); it.More(); it.Next())
+      if (BRepAdaptor_Curve(TopoDS::Edge(it.Current())).GetType() == GeomAbs_Line)
+        EXPECT_LE(length(it.Current()), 62.0);
+    // Across each slot, halfway along it, the gap is thickness + clearance wide.
+    for (const SlotCut& c : d.realization.cuts[k]) {
+      if (c.y.hi - c.y.lo < 2) continue;
+      const double y = (c.y.lo + c.y.hi) / 2;
+      for (const Interval& gap : [&] {
+             std::vector<Interval> gaps;
+             const auto row = f.outline.intervalsOnLine({0, y}, {1, 0});
+             for (size_t i = 0; i + 1 < row.size(); ++i) gaps.push_back({row[i].hi, row[i + 1].lo});
+             return gaps;
+           }()) {
+        if (gap.lo > c.x || gap.hi < c.x) continue;
+        EXPECT_NEAR(gap.hi - gap.lo, params.width(), 1e-3);
+        ++slotsMeasured;
+      }
+    }
+  }
+  EXPECT_GT(slotsMeasured, 4);
+}
+
+// Mesh sources keep their polygons: one planar face per patch, holes included.
+TEST(ExactPatches, PolygonFacesOfAMesh) {
+  const Region2d square = Region2d::fromLoops({{{0, 0}, {40, 0}, {40, 40}, {0, 40}}, {{10, 10}, {10, 30}, {30, 30}, {30, 10}}});
+  const SliceFrame frame = makeSliceFrame({1, 0, 0}, {0, 0, 1});
+  const TopoDS_Shape face = facesFromRegion(square, frame, 7);
+  GProp_GProps props;
+  BRepGProp::SurfaceProperties(face, props);
+  EXPECT_NEAR(props.Mass(), 1600 - 400, 1e-6);
+  EXPECT_NEAR(props.CentreOfMass().X(), 7, 1e-9);
+  int wires = 0;
+  for (TopExp_Explorer it(face, TopAbs_WIRE); it.More(); it.Next()) ++wires;
+  EXPECT_EQ(wires, 2);
+}
+
+TEST(ExactPatches, KerfMovesCutPathsAwayFromThePaper) {
+  const Region2d square = Region2d::fromLoops({{{0, 0}, {40, 0}, {40, 40}, {0, 40}}, {{10, 10}, {10, 30}, {30, 30}, {30, 10}}});
+  const SliceFrame frame = makeSliceFrame({1, 0, 0}, {0, 0, 1});
+  const TopoDS_Shape path = kerfCompensated(facesFromRegion(square, frame, 0), 0.2);
+  std::vector<double> spans;
+  for (TopExp_Explorer it(path, TopAbs_WIRE); it.More(); it.Next()) {
+    Bnd_Box box;
+    BRepBndLib::AddOptimal(it.Current(), box, false, false);
+    double x0, y0, z0, x1, y1, z1;
+    box.Get(x0, y0, z0, x1, y1, z1);
+    spans.push_back(z1 - z0);  // W is z
+  }
+  std::sort(spans.begin(), spans.end());
+  ASSERT_EQ(spans.size(), 2u);
+  EXPECT_NEAR(spans[0], 19.8, 1e-6);  // the hole shrinks
+  EXPECT_NEAR(spans[1], 40.2, 1e-6);  // the outline grows
+  EXPECT_GT(edgesOfType(path, GeomAbs_Circle), 0) << "outer corners become arcs";
+}
+
+// Folded almost flat, the patches still touch only at hinge points: every U/V pair of faces
+// meets in isolated points, never along a line.
+TEST(Fold, FoldedTorusHasNoCollisions) {
+  const Design d = design(modelFromShape(test::makeTorus(60, 20), "torus"));
+  for (double theta : {90.0, 12.0}) {
+    std::vector<TopoDS_Shape> placed;
+    std::vector<Bnd_Box> boxes;
+    for (size_t k = 0; k < d.faces.size(); ++k) {
+      placed.push_back(d.faces[k].shape.Moved(TopLoc_Location(foldTransform(d.arrangement, k, theta))));
+      Bnd_Box b;
+      BRepBndLib::Add(placed.back(), b);
+      boxes.push_back(b);
+    }
+    int pairs = 0;
+    for (size_t a = 0; a < placed.size(); ++a) {
+      if (d.arrangement.scaffold.patches[a].family != Family::U) continue;
+      for (size_t b = 0; b < placed.size(); ++b) {
+        if (d.arrangement.scaffold.patches[b].family != Family::V || boxes[a].IsOut(boxes[b])) continue;
+        BRepAlgoAPI_Section section(placed[a], placed[b]);
+        ASSERT_TRUE(section.IsDone());
+        EXPECT_LT(length(section.Shape()), 1e-6) << "theta " << theta << " patches " << a << ", " << b;
+        ++pairs;
+      }
+    }
+    EXPECT_GT(pairs, 10);
+  }
+  // Popped up, the transform changes nothing; folded, U-patches only translate.
+  EXPECT_LT(foldTransform(d.arrangement, 0, 90).TranslationPart().Modulus(), 1e-9);
+  for (size_t k = 0; k < d.faces.size(); ++k)
+    if (d.arrangement.scaffold.patches[k].family == Family::U)
+      EXPECT_EQ(foldTransform(d.arrangement, k, 12).Form(), gp_Translation);
+}
+
+TEST(Fold, AssemblyIsWrittenAsStepAndBrep) {
+  const Design d = design(modelFromShape(test::makeSphere(40), "sphere"), 24);
+  test::TempDir dir;
+  const TopoDS_Shape all = assemble(d.arrangement, d.faces, 30);
+  writeShape(all, dir.file("a.step"));
+  writeShape(all, dir.file("a.brep"));
+  EXPECT_GT(std::filesystem::file_size(dir.file("a.step")), 1000u);
+  EXPECT_GT(std::filesystem::file_size(dir.file("a.brep")), 1000u);
+  EXPECT_THROW(writeShape(all, dir.file("a.obj")), Error);
+  EXPECT_FALSE(std::filesystem::exists(dir.file("a.obj")));
+}
+
+}  // namespace
+}  // namespace sliceform
