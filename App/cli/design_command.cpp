@@ -1,38 +1,86 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
-// `sliceform design MODEL`: arranges a stable sliceform scaffold (§4) and prints a
-// summary: patches per family, hinges, the certificate, quality, time per stage.
-// --json writes the scaffold.
+// `sliceform design MODEL -o DIR`: arranges a stable sliceform scaffold (§4), slots it so
+// it can be assembled (§5), builds the exact patches, and prints a summary: patches,
+// hinges, the certificate, interlocks, slots, quality, time per stage. With -o it writes
+// report.json, timings.json and the 3D assembly (assembly.step, assembly.brep) into DIR.
 #include <algorithm>
 #include <cstdio>
 #include <memory>
 #include <string>
 #include <vector>
 
-#include "arrangement/arrange.hpp"
+#include <filesystem>
+
+#include <unistd.h>
+
+#include "assembly/fold.hpp"
 #include "cli/commands.hpp"
-#include "output/scaffold_json.hpp"
+#include "output/report_json.hpp"
+#include "pipeline/design.hpp"
 #include "support/error.hpp"
 
 namespace sliceform::cli {
 namespace {
 
 struct DesignOptions : ModelOptions {
-  std::string json;
+  std::string output;
   double size = 150;
   std::string scheme = "both";
-  ArrangementParams params;
+  std::string slotEnd = "square";
+  std::string uSlots = "up";
+  double foldAngle = 90;
+  DesignParams params;
 };
 
+void printRealization(const Design& d, const DesignParams& params) {
+  const Realization& r = d.realization;
+  std::printf("interlocks %d found, %d repaired, %d remaining; %d cut-through(s); %d split patch(es)\n",
+              r.interlocks.found, r.interlocks.repaired, d.emitted.interlocks, r.interlocks.cutThroughs,
+              d.emitted.splitPatches);
+  std::printf("slotted    stable %s (nullity %d); %d pair(s) lost every holding hinge\n",
+              d.certificate.stable ? "yes" : "NO", d.certificate.nullity, r.lostPins);
+  std::printf("slots      %.2f mm wide; smallest slot-to-edge distance %.2f mm; shortest hinge %.2f mm\n",
+              params.slots.width(), r.minSlotEdgeDistance, r.shortestHinge);
+  int exact = 0;
+  for (const PatchFace& p : d.patches) exact += p.exact ? 1 : 0;
+  std::printf("patches    %d of %zu exact (from the BRep's sections), the others polygons\n", exact,
+              d.patches.size());
+  std::printf("assembly   %s:", r.assemblyChecked ? "order checked pairwise" : "ORDER NOT FREE of interlocks");
+  for (const int k : r.assemblyOrder) std::printf(" %s", patchId(d.arrangement.scaffold, k).c_str());
+  std::printf("\n");
+}
+
+void writeOutputs(const Model& model, const DesignParams& params, const Design& d, const DesignOptions& o) {
+  std::filesystem::create_directories(o.output);
+  const std::filesystem::path dir(o.output);
+  writeJson(reportJson(model, params, d), (dir / "report.json").string());
+  writeJson(timingsJson(d), (dir / "timings.json").string());
+  const TopoDS_Shape assembly = assemble(d.arrangement, d.patches, o.foldAngle);
+  writeShape(assembly, (dir / "assembly.step").string());
+  writeShape(assembly, (dir / "assembly.brep").string());
+  std::printf("wrote      %s: report.json, timings.json, assembly.step and assembly.brep at %g degrees\n",
+              o.output.c_str(), o.foldAngle);
+}
+
 void runDesign(DesignOptions o) {
+  if (!(o.foldAngle > 0 && o.foldAngle <= 90))
+    throw Error(ErrorKind::BadParameter, "the fold angle must be in (0, 90] degrees");
   Model model = readModel(o.model);
   if (o.size > 0) model = scaledToSize(model, o.size);
-  ArrangementParams& p = o.params;
+  ArrangementParams& p = o.params.arrangement;
   p.u = o.uDirection();
   p.v = o.vDirection();
   p.stabilize.scheme = o.scheme == "u"   ? Scheme::DominantU
                        : o.scheme == "v" ? Scheme::DominantV
                                          : Scheme::Both;
-  const Arrangement a = arrange(model, p);
+  o.params.slots.end = o.slotEnd == "round" ? SlotEnd::Round : SlotEnd::Square;
+  o.params.slots.uUp = o.uSlots == "up";
+  const bool tty = ::isatty(2);
+  const Design d = runDesign(model, o.params, [tty](const char* stage) {
+    if (tty) std::fprintf(stderr, "\r\033[K%s ...", stage);
+  });
+  if (tty) std::fprintf(stderr, "\r\033[K");
+  const Arrangement& a = d.arrangement;
 
   int nu = 0, nv = 0, holding = 0;
   for (const ScaffoldPatch& sp : a.scaffold.patches) (sp.family == Family::U ? nu : nv)++;
@@ -51,9 +99,10 @@ void runDesign(DesignOptions o) {
               a.certificate.reason.empty() ? "" : ": ", a.certificate.reason.c_str());
   std::printf("quality    silhouette IoU U %.3f, V %.3f, W %.3f; volume IoU %.3f\n", a.quality.silhouetteIouU,
               a.quality.silhouetteIouV, a.quality.silhouetteIouW, a.quality.volumeIou);
+  printRealization(d, o.params);
   std::printf("time      ");
   double total = 0;
-  for (const StageTime& t : a.timings) {
+  for (const StageTime& t : d.timings) {
     std::printf(" %s %.1f ms,", t.stage.c_str(), t.ms);
     total += t.ms;
   }
@@ -74,13 +123,17 @@ void runDesign(DesignOptions o) {
           "scaffold by hinges that hold\n",
           big, f == Family::U ? "U" : "V");
   }
-  if (!o.json.empty()) {
-    writeJson(scaffoldJson(a, p), o.json);
-    std::printf("wrote      %s\n", o.json.c_str());
-  }
-  // Never hand on an unstable scaffold silently: it is a bug in the frame logic.
+  if (!o.output.empty()) writeOutputs(model, o.params, d, o);
+  // Never hand on a design that cannot be built silently: the files are written so the
+  // problem can be looked at, and the exit code says it failed.
   if (!a.certificate.stable)
     throw Error(ErrorKind::Geometry, "the scaffold is not stable: " + a.certificate.reason);
+  if (!d.certificate.stable)
+    throw Error(ErrorKind::Geometry, "the slotted design is not stable: " + d.certificate.reason);
+  if (d.emitted.interlocks > 0 || d.emitted.splitPatches > 0)
+    throw Error(ErrorKind::Geometry, "the design cannot be assembled: " + std::to_string(d.emitted.interlocks) +
+                                         " interlocked loop pair(s), " + std::to_string(d.emitted.splitPatches) +
+                                         " patch(es) in pieces");
 }
 
 }  // namespace
@@ -88,30 +141,47 @@ void runDesign(DesignOptions o) {
 Run addDesignCommand(CLI::App& app) {
   auto o = std::make_shared<DesignOptions>();
   CLI::App* cmd =
-      app.add_subcommand("design", "Arrange a stable sliceform scaffold for the model and summarise it.");
+      app.add_subcommand("design", "Design a sliceform for the model: stable, slotted so it can be assembled, "
+                                   "with exact patches; summarise it and write it to a folder.");
   addModelOptions(cmd, *o);
-  cmd->add_option("--json", o->json,
-                  "write the scaffold (patches, hinges, certificate, quality) to this file");
+  cmd->add_option("-o,--output", o->output,
+                  "folder to write report.json, timings.json, assembly.step and assembly.brep into "
+                  "(created if missing; files are replaced whole)");
   cmd->add_option(
          "--size", o->size,
          "scale the model so its longest side is this many mm (0: keep its size; mesh files carry no unit)")
       ->capture_default_str();
-  cmd->add_option("-n,--slices", o->params.slices, "slices per direction")->capture_default_str();
-  cmd->add_option("--interval", o->params.interval, "slice interval in mm (overrides --slices)");
-  cmd->add_option("--tau-a", o->params.tauA, "cylinder error budget, relative to each part's volume")
+  cmd->add_option("-n,--slices", o->params.arrangement.slices, "slices per direction")->capture_default_str();
+  cmd->add_option("--interval", o->params.arrangement.interval, "slice interval in mm (overrides --slices)");
+  cmd->add_option("--tau-a", o->params.arrangement.tauA, "cylinder error budget, relative to each part's volume")
       ->capture_default_str();
-  cmd->add_option("--tau-m", o->params.tauM, "Reeb branch merge threshold (weight ratio)")
+  cmd->add_option("--tau-m", o->params.arrangement.tauM, "Reeb branch merge threshold (weight ratio)")
       ->capture_default_str();
   cmd->add_option("--scheme", o->scheme, "both, or u / v for one dominant direction")
       ->check(CLI::IsMember({"both", "u", "v"}))
       ->capture_default_str();
-  cmd->add_option("--min-hinge-length", o->params.hinges.minHingeLength,
+  cmd->add_option("--min-hinge-length", o->params.arrangement.hinges.minHingeLength,
                   "mm a hinge must be long to carry load")
       ->capture_default_str();
-  cmd->add_option("--min-slot-edge-distance", o->params.hinges.minSlotEdgeDistance,
+  cmd->add_option("--min-slot-edge-distance", o->params.arrangement.hinges.minSlotEdgeDistance,
                   "mm of paper to keep on each side of a slot")
       ->capture_default_str();
-  cmd->add_option("--max-spacing", o->params.stabilize.maxSpacing,
+  cmd->add_option("--thickness", o->params.slots.thickness, "mm of material (0.3 for card, 3 for plywood)")
+      ->capture_default_str();
+  cmd->add_option("--clearance", o->params.slots.clearance, "mm added to the thickness for the slot width")
+      ->capture_default_str();
+  cmd->add_option("--kerf", o->params.slots.kerf, "mm the cutter removes; cut paths are moved out by half")
+      ->capture_default_str();
+  cmd->add_option("--slot-end", o->slotEnd, "square, or round closed slot ends")
+      ->check(CLI::IsMember({"square", "round"}))
+      ->capture_default_str();
+  cmd->add_option("--u-slots", o->uSlots, "up or down: which way U-patches are slotted first (V the other way)")
+      ->check(CLI::IsMember({"up", "down"}))
+      ->capture_default_str();
+  cmd->add_option("--fold-angle", o->foldAngle, "degrees between the families in the 3D assembly: 90 is "
+                                                "popped up, small angles fold it flat")
+      ->capture_default_str();
+  cmd->add_option("--max-spacing", o->params.arrangement.stabilize.maxSpacing,
                   "mm; add patches in long cylinders so none is farther apart (0: off)")
       ->capture_default_str();
   return [o] { runDesign(*o); };

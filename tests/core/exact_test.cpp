@@ -35,7 +35,7 @@ Design design(const Model& model, int slices = 32) {
   params.slices = slices;
   params.hinges.slotWidth = SlotParams{}.width();
   d.arrangement = arrange(d.model, params);
-  d.realization = realize(realizationInput(d.arrangement), SlotParams{});
+  d.realization = realize(realizationInput(d.arrangement, model.meshDeflection), SlotParams{});
   d.faces = exactPatches(d.model, d.arrangement, d.realization);
   return d;
 }

@@ -147,9 +147,10 @@ void expectRealizable(const TopoDS_Shape& shape, int slices = 48) {
   params.slices = slices;
   SlotParams slots;
   params.hinges.slotWidth = slots.width();
-  const Arrangement a = arrange(modelFromShape(shape, "test solid"), params);
+  const Model model = modelFromShape(shape, "test solid");
+  const Arrangement a = arrange(model, params);
   ASSERT_TRUE(a.certificate.stable);
-  const Realization r = realize(realizationInput(a), slots);
+  const Realization r = realize(realizationInput(a, model.meshDeflection), slots);
   EXPECT_EQ(r.interlocks.remaining, 0);
   EXPECT_EQ(r.splitPatches, 0);
   for (const Region2d& p : r.slotted) EXPECT_EQ(p.components().size(), 1u);

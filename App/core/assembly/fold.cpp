@@ -90,6 +90,9 @@ void writeShape(const TopoDS_Shape& shape, const std::string& path) {
       } restore{printers, levels};
       STEPControl_Writer writer;
       Interface_Static::SetCVal("write.step.unit", "MM");
+      // No 2D curves on the planes: readers rebuild them, and they doubled the file and the
+      // time (a mesh's polygon patches have tens of thousands of edges).
+      Interface_Static::SetIVal("write.surfacecurve.mode", 0);
       if (writer.Transfer(shape, STEPControl_AsIs) != IFSelect_RetDone ||
           writer.Write(temporary.c_str()) != IFSelect_RetDone)
         throw Error(ErrorKind::Io, "cannot write " + path);

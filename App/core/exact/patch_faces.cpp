@@ -83,6 +83,10 @@ TopoDS_Shape boolean(const std::vector<TopoDS_Shape>& arguments, const std::vect
     op.SetTools(tls);
     op.SetNonDestructive(Standard_True);  // slice faces are shared between patches
     op.SetRunParallel(Standard_False);
+    // Sections of neighbouring slices have nearly coincident, nearly tangent edges. Exact
+    // Booleans then left overlapping pieces that no longer unify (occ/Ball.brep: 8 faces
+    // fused into 52, 2 % too much area); a fuzzy value of 10 nm merges them into one face.
+    op.SetFuzzyValue(1e-5);
     op.Build();
     if (!op.IsDone() || op.HasErrors()) {
       std::ostringstream report;

@@ -8,8 +8,8 @@
 #include <tuple>
 
 #include "arrangement/arrange.hpp"
+#include "frames/hinge_table.hpp"
 #include "realization/interlock.hpp"
-#include "support/error.hpp"
 
 namespace sliceform {
 namespace {
@@ -18,9 +18,10 @@ constexpr int kMaxCommonHinges = 8;  // 2^8 combinations of one pair's hinges at
 
 // What the search minimises, in this order.
 struct Score {
-  int splits = 0, interlocks = 0, cutThroughs = 0;
+  int broken = 0;  // split patches, and pairs whose holding hinges all lost their paper
+  int interlocks = 0, cutThroughs = 0;
   bool operator<(const Score& o) const {
-    return std::tie(splits, interlocks, cutThroughs) < std::tie(o.splits, o.interlocks, o.cutThroughs);
+    return std::tie(broken, interlocks, cutThroughs) < std::tie(o.broken, o.interlocks, o.cutThroughs);
   }
 };
 
@@ -54,7 +55,7 @@ class Search {
       hingesOf_[in.hinges[h].u].push_back(h);
       hingesOf_[in.hinges[h].v].push_back(h);
     }
-    slots_.assign(in.hinges.size(), SlotPair::UpDown);
+    slots_.assign(in.hinges.size(), params.uUp ? SlotPair::UpDown : SlotPair::DownUp);
     cuts_.resize(n_);
     slotted_.resize(n_);
     pieces_.assign(n_, 1);
@@ -84,7 +85,9 @@ class Search {
     r.slotted = slotted_;
     const Score s = score();
     r.interlocks = {found_, std::max(0, found_ - s.interlocks), s.interlocks, s.cutThroughs};
-    r.splitPatches = s.splits;
+    for (int p = 0; p < n_; ++p) r.splitPatches += pieces_[p] > 1 ? 1 : 0;
+    r.meets = meetsAll();
+    r.lostPins = static_cast<int>(lostPins().size());
     measure(r);
     order(r);
     return r;
@@ -96,7 +99,7 @@ class Search {
   void evaluatePatch(int p) {
     const PatchShape& ps = in_.patches[p];
     cuts_[p] = planSlots(ps.shape, patchHinges(in_, slots_, p), params_);
-    slotted_[p] = cutSlots(ps.shape, slotRegion(cuts_[p], params_), params_, &pieces_[p]);
+    slotted_[p] = cutSlots(ps.shape, slotRegion(cuts_[p], params_), params_, in_.tolerance, &pieces_[p]);
     holes_[p] = holeLoops(slotted_[p], ps.position);
   }
 
@@ -109,9 +112,47 @@ class Search {
     }
   }
 
+  // Whether the slotted patches of hinge h still meet along it: with both slots pointing the
+  // same way at two hinges on one line (the paper's rule ends a slot at the next hinge's
+  // root), one patch keeps no paper along the second hinge, which is then no hinge.
+  bool meets(int h) const {
+    const ScaffoldHinge& hinge = in_.hinges[h];
+    double covered = 0;
+    for (const int p : {hinge.u, hinge.v}) {
+      const int other = p == hinge.u ? hinge.v : hinge.u;
+      const bool isU = in_.patches[p].family == Family::U;
+      const double x = lineX(isU ? in_.uFrame : in_.vFrame, isU ? in_.vFrame : in_.uFrame, in_.patches[other].position);
+      for (const Interval& i : intersectIntervals(slotted_[p].intervalsOnLine({x, 0}, {0, 1}), {hinge.w}))
+        covered += i.hi - i.lo;
+    }
+    return covered >= 0.9 * (hinge.w.hi - hinge.w.lo);
+  }
+
+  std::vector<bool> meetsAll() const {
+    std::vector<bool> out(in_.hinges.size());
+    for (size_t h = 0; h < out.size(); ++h) out[h] = meets(static_cast<int>(h));
+    return out;
+  }
+
+  // Pairs that had a holding hinge and have none left whose patches meet.
+  std::set<std::pair<int, int>> lostPins() const {
+    std::set<std::pair<int, int>> had, kept;
+    for (size_t h = 0; h < in_.hinges.size(); ++h) {
+      const ScaffoldHinge& hinge = in_.hinges[h];
+      if (!hinge.holds) continue;
+      had.insert({hinge.u, hinge.v});
+      if (meets(static_cast<int>(h))) kept.insert({hinge.u, hinge.v});
+    }
+    std::set<std::pair<int, int>> lost;
+    for (const auto& pair : had)
+      if (!kept.count(pair)) lost.insert(pair);
+    return lost;
+  }
+
   Score score() const {
     Score s;
-    for (int p = 0; p < n_; ++p) s.splits += pieces_[p] > 1 ? 1 : 0;
+    for (int p = 0; p < n_; ++p) s.broken += pieces_[p] > 1 ? 1 : 0;
+    s.broken += static_cast<int>(lostPins().size());
     for (const int l : locks_) s.interlocks += l;
     for (const SlotPair x : slots_) s.cutThroughs += isUpDown(x) ? 0 : 1;
     return s;
@@ -121,6 +162,8 @@ class Search {
   std::pair<int, int> nextViolation(const std::set<std::pair<int, int>>& given) const {
     for (int p = 0; p < n_; ++p)
       if (pieces_[p] > 1 && !given.count({p, -1})) return {p, -1};
+    for (const auto& pair : lostPins())
+      if (!given.count(pair)) return pair;
     for (int a = 0; a < n_; ++a)
       for (int b = 0; b < n_; ++b)
         if (lockAt(a, b) > 0 && !given.count({a, b})) return {a, b};
@@ -320,7 +363,21 @@ std::vector<PatchHinge> patchHinges(const RealizationInput& input, const std::ve
   return out;
 }
 
-RealizationInput realizationInput(const Arrangement& a) {
+Emitted checkEmitted(const RealizationInput& input, const std::vector<Region2d>& outlines) {
+  Emitted e;
+  std::vector<HoleLoops> holes;
+  for (size_t p = 0; p < outlines.size(); ++p) {
+    holes.push_back(holeLoops(outlines[p], input.patches[p].position));
+    e.splitPatches += outlines[p].components().size() == 1 ? 0 : 1;
+  }
+  for (size_t a = 0; a < outlines.size(); ++a)
+    for (size_t b = 0; b < outlines.size(); ++b)
+      if (input.patches[a].family == Family::U && input.patches[b].family == Family::V)
+        e.interlocks += interlockCount(holes[a], input.uFrame, holes[b], input.vFrame);
+  return e;
+}
+
+RealizationInput realizationInput(const Arrangement& a, double tolerance) {
   RealizationInput in;
   in.uFrame = a.u.frame;
   in.vFrame = a.v.frame;
@@ -329,14 +386,12 @@ RealizationInput realizationInput(const Arrangement& a) {
     in.patches.push_back({p.family, p.position, cylinders[p.cylinder].section});
   }
   in.hinges = a.scaffold.hinges;
+  in.tolerance = tolerance;
   return in;
 }
 
 Realization realize(const RealizationInput& input, const SlotParams& params) {
-  if (!(params.thickness > 0) || !(params.clearance >= 0) || !(params.kerf >= 0) ||
-      !(params.kerf < params.width()))
-    throw Error(ErrorKind::BadParameter,
-                "the thickness must be > 0, clearance and kerf >= 0, and the kerf narrower than the slot");
+  checkSlotParams(params);
   Search search(input, params);
   search.run();
   return search.result();

@@ -12,7 +12,10 @@
 //   2. flipping any one other hinge of either patch,
 //   3. a cut-through at one hinge of either patch, never at the last holding hinge between
 //      two patches, so every pin of the certificate keeps an up/down slot.
-// A violation that no move improves is left and counted as remaining.
+// A violation that no move improves is left and counted as remaining. Besides interlocks
+// and split patches, a violation is a pair of patches whose holding hinges all stop
+// meeting once slotted (two slots the same way on one line clear a whole hinge), which
+// would take a pin from the certificate.
 #pragma once
 
 #include <vector>
@@ -35,8 +38,10 @@ struct RealizationInput {
   SliceFrame uFrame, vFrame;
   std::vector<PatchShape> patches;
   std::vector<ScaffoldHinge> hinges;
+  double tolerance = 0;  // mm the polygon shapes may stray from the true ones
 };
-RealizationInput realizationInput(const Arrangement& arrangement);
+// `tolerance`: the model's mesh deflection (the polygons come from its triangulation).
+RealizationInput realizationInput(const Arrangement& arrangement, double tolerance);
 
 struct InterlockStats {
   int found = 0;        // interlocked hole pairs with the default slots
@@ -52,6 +57,8 @@ struct Realization {
   std::vector<Region2d> slotted;            // per patch: shape minus slots, crumbs dropped
   InterlockStats interlocks;
   int splitPatches = 0;                     // patches in more than one piece (must be 0)
+  std::vector<bool> meets;                  // per hinge: the slotted patches still meet along it
+  int lostPins = 0;                         // pairs whose every holding hinge stopped meeting
   double minSlotEdgeDistance = 0;           // mm of paper left around slot roots of holding hinges
   double shortestHinge = 0;                 // mm, over holding hinges
   std::vector<int> assemblyOrder;           // patch indices
@@ -59,6 +66,13 @@ struct Realization {
 };
 
 Realization realize(const RealizationInput& input, const SlotParams& params);
+
+// Interlocks and split patches of the outlines actually emitted (the exact faces,
+// polygonised), checked again after the search.
+struct Emitted {
+  int interlocks = 0, splitPatches = 0;
+};
+Emitted checkEmitted(const RealizationInput& input, const std::vector<Region2d>& outlines);
 
 // The hinges of one patch as planSlots sees them, with the given slot choices.
 std::vector<PatchHinge> patchHinges(const RealizationInput& input, const std::vector<SlotPair>& slots, int patch);

@@ -32,8 +32,13 @@ struct SlotParams {
   double clearance = 0.2;  // mm added so the partner slides in
   double kerf = 0;         // mm the cutter removes; outputs compensate half of it per side
   SlotEnd end = SlotEnd::Square;
+  bool uUp = true;         // the first try: U-patches slotted up (+W), V-patches down
   double width() const { return thickness + clearance; }
 };
+
+// Throws BadParameter for a thickness <= 0, negative clearance or kerf, or a kerf as wide as
+// the slot.
+void checkSlotParams(const SlotParams& params);
 
 // One hinge as a patch sees it.
 struct PatchHinge {
@@ -72,8 +77,11 @@ SlotShapes slotShapes(const std::vector<SlotCut>& cuts, const SlotParams& params
 Region2d slotRegion(const std::vector<SlotCut>& cuts, const SlotParams& params);
 
 // The slotted patch: shape minus its slots. Crumbs (pieces smaller than a slot-wide square
-// or 0.5 mm², whichever is larger) fall out when cut and are dropped; `pieces` is set to
-// the number of pieces that remain, which must be 1.
-Region2d cutSlots(const Region2d& shape, const Region2d& slots, const SlotParams& params, int* pieces);
+// or 0.5 mm², whichever is larger) fall out when cut and are dropped. `pieces` is set to the
+// number of pieces that remain, which must be 1; a bridge narrower than the material
+// thickness (at least 0.2 mm) plus twice `tolerance` (how far the polygons may stray from
+// the true shape) counts as cut, unless the shape had it before the slots.
+Region2d cutSlots(const Region2d& shape, const Region2d& slots, const SlotParams& params, double tolerance,
+                  int* pieces);
 
 }  // namespace sliceform

@@ -1,0 +1,157 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+#include "output/report_json.hpp"
+
+#include <fstream>
+
+#include "support/atomic_file.hpp"
+#include "support/error.hpp"
+
+namespace sliceform {
+namespace {
+
+using nlohmann::json;
+
+json vec(const Vec3& v) {
+  return json::array({v.x, v.y, v.z});
+}
+
+const char* schemeName(Scheme s) {
+  switch (s) {
+    case Scheme::DominantU: return "U";
+    case Scheme::DominantV: return "V";
+    case Scheme::Both: return "both";
+  }
+  return "both";
+}
+
+// Outer loop first, then the holes (Region2d gives them in Clipper's order).
+json outline(const Region2d& region) {
+  std::vector<Region2d::Loop> loops = region.loops();
+  std::stable_partition(loops.begin(), loops.end(), [](const Region2d::Loop& l) {
+    double a = 0;
+    for (size_t i = 0; i < l.size(); ++i) a += l[i].x * l[(i + 1) % l.size()].y - l[(i + 1) % l.size()].x * l[i].y;
+    return a > 0;
+  });
+  json out = json::array();
+  for (const Region2d::Loop& loop : loops) {
+    json points = json::array();
+    for (const Vec2& q : loop) points.push_back({q.x, q.y});
+    out.push_back(points);
+  }
+  return out;
+}
+
+}  // namespace
+
+json reportJson(const Model& model, const DesignParams& params, const Design& d) {
+  const Arrangement& a = d.arrangement;
+  const Realization& r = d.realization;
+  const ArrangementParams& p = params.arrangement;
+  json doc;
+  doc["format"] = "sliceform-report";
+  doc["version"] = 1;
+  doc["parameters"] = {{"u", vec(p.u)},
+                       {"v", vec(p.v)},
+                       {"slices", p.slices},
+                       {"interval_mm", a.u.interval},
+                       {"tau_a", p.tauA},
+                       {"tau_m", p.tauM},
+                       {"scheme", schemeName(p.stabilize.scheme)},
+                       {"max_spacing_mm", p.stabilize.maxSpacing},
+                       {"min_hinge_length_mm", p.hinges.minHingeLength},
+                       {"min_slot_edge_distance_mm", p.hinges.minSlotEdgeDistance},
+                       {"thickness_mm", params.slots.thickness},
+                       {"clearance_mm", params.slots.clearance},
+                       {"slot_width_mm", params.slots.width()},
+                       {"kerf_mm", params.slots.kerf},
+                       {"slot_end", params.slots.end == SlotEnd::Round ? "round" : "square"},
+                       {"u_slots", params.slots.uUp ? "up" : "down"}};
+  const Vec3 lo = model.bounds.min, hi = model.bounds.max;
+  doc["model"] = {{"source", model.source},
+                  {"kind", model.kind == SourceKind::Brep ? "brep" : "mesh"},
+                  {"triangles", model.mesh.triangles.size()},
+                  {"bbox_mm", {vec(lo), vec(hi)}}};
+  json patches = json::array();
+  for (int k = 0; k < static_cast<int>(a.scaffold.patches.size()); ++k) {
+    const ScaffoldPatch& sp = a.scaffold.patches[k];
+    const PatchPlane plane = patchPlane(a, k);
+    const PatchFace& face = d.patches[k];
+    patches.push_back({{"id", patchId(a.scaffold, k)},
+                       {"family", sp.family == Family::U ? "U" : "V"},
+                       {"cylinder", sp.cylinder},
+                       {"slice", sp.slice},
+                       {"origin", vec(plane.origin)},
+                       {"normal", vec(plane.normal)},
+                       {"x_axis", vec(plane.xAxis)},
+                       {"y_axis", vec(plane.yAxis)},
+                       {"area_mm2", face.outline.area()},
+                       {"exact", face.exact},
+                       {"outline", outline(face.outline)}});
+  }
+  doc["patches"] = patches;
+  json hinges = json::array();
+  int collapsed = 0;
+  for (size_t h = 0; h < a.scaffold.hinges.size(); ++h) {
+    const ScaffoldHinge& hinge = a.scaffold.hinges[h];
+    // A hinge whose slotted patches no longer meet along it is not a hinge of the design.
+    if (!r.meets[h]) {
+      ++collapsed;
+      continue;
+    }
+    const auto [p0, p1] = hingeEnds(a, hinge);
+    hinges.push_back({{"a", patchId(a.scaffold, hinge.u)},
+                      {"b", patchId(a.scaffold, hinge.v)},
+                      {"p0", vec(p0)},
+                      {"p1", vec(p1)},
+                      {"holds", hinge.holds},
+                      {"slot_a", slotName(uSlot(r.slots[h]))},
+                      {"slot_b", slotName(vSlot(r.slots[h]))}});
+  }
+  doc["hinges"] = hinges;
+  doc["hinges_cleared_by_slots"] = collapsed;
+  doc["certificate"] = {{"stable", d.certificate.stable},
+                        {"nullity", d.certificate.nullity},
+                        {"pins", d.certificate.pins},
+                        {"reason", d.certificate.reason}};
+  doc["interlocks"] = {{"found", r.interlocks.found},
+                       {"repaired", r.interlocks.repaired},
+                       {"remaining", d.emitted.interlocks},
+                       {"cut_throughs", r.interlocks.cutThroughs}};
+  doc["split_patches"] = d.emitted.splitPatches;
+  doc["min_slot_edge_distance_mm"] = r.minSlotEdgeDistance;
+  doc["min_hinge_length_mm"] = r.shortestHinge;
+  doc["quality"] = {{"silhouette_iou_u", a.quality.silhouetteIouU},
+                    {"silhouette_iou_v", a.quality.silhouetteIouV},
+                    {"silhouette_iou_w", a.quality.silhouetteIouW},
+                    {"volume_iou", a.quality.volumeIou}};
+  json order = json::array();
+  for (const int k : r.assemblyOrder) order.push_back(patchId(a.scaffold, k));
+  doc["assembly_order"] = order;
+  doc["assembly_order_checked"] = r.assemblyChecked;
+  doc["cylinders"] = {{"u", a.uCylinders.size()},
+                      {"v", a.vCylinders.size()},
+                      {"uncovered_u", a.scaffold.uncoveredU},
+                      {"uncovered_v", a.scaffold.uncoveredV}};
+  return doc;
+}
+
+json timingsJson(const Design& d) {
+  json out = json::object();
+  double total = 0;
+  for (const StageTime& t : d.timings) {
+    out[t.stage] = t.ms;
+    total += t.ms;
+  }
+  out["total"] = total;
+  return out;
+}
+
+void writeJson(const json& doc, const std::string& path) {
+  writeAtomically(path, [&](const std::string& temporary) {
+    std::ofstream out(temporary);
+    out << doc.dump(1) << "\n";
+    if (!out.good()) throw Error(ErrorKind::Io, "cannot write " + path);
+  });
+}
+
+}  // namespace sliceform

@@ -1,0 +1,35 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// The whole pipeline from a model to a design that can be cut: arrangement (§4),
+// realization (§5), exact patch faces, and a last check of what is emitted: interlocks and
+// split patches on the exact outlines, and the certificate on the hinges that are left. Each stage is
+// timed; `progress` hears of each stage as it starts.
+#pragma once
+
+#include <functional>
+#include <vector>
+
+#include "arrangement/arrange.hpp"
+#include "exact/patch_faces.hpp"
+#include "realization/realize.hpp"
+
+namespace sliceform {
+
+struct DesignParams {
+  ArrangementParams arrangement;
+  SlotParams slots;
+};
+
+struct Design {
+  Arrangement arrangement;
+  Realization realization;
+  std::vector<PatchFace> patches;  // exact faces at the popped-up pose
+  Emitted emitted;                 // interlocks and split patches of the emitted outlines
+  Certificate certificate;         // again, on the hinges whose slotted patches still meet
+  std::vector<StageTime> timings;  // every stage, the arrangement's included
+};
+
+using Progress = std::function<void(const char* stage)>;
+
+Design runDesign(const Model& model, DesignParams params, const Progress& progress = {});
+
+}  // namespace sliceform
