@@ -40,6 +40,22 @@ Design design(const Model& model, int slices = 32) {
   return d;
 }
 
+// The emitted exact faces of solids with holes and voids: one piece each, no interlocks.
+void expectBuildable(const TopoDS_Shape& shape) {
+  const Design d = design(modelFromShape(shape, "test solid"));
+  std::vector<Region2d> outlines;
+  for (const PatchFace& f : d.faces) {
+    EXPECT_EQ(f.pieces, 1);
+    outlines.push_back(f.outline);
+  }
+  const Emitted e = checkEmitted(realizationInput(d.arrangement, d.model.meshDeflection), outlines);
+  EXPECT_EQ(e.interlocks, 0);
+  EXPECT_EQ(e.splitPatches, 0);
+}
+
+TEST(ExactPatches, HollowSphereIsBuildable) { expectBuildable(test::makeHollowSphere(60, 45)); }
+TEST(ExactPatches, BoxWithWindowsIsBuildable) { expectBuildable(test::makeBoxWithWindows(120, 80, 60, 6)); }
+
 int edgesOfType(const TopoDS_Shape& shape, GeomAbs_CurveType type) {
   int n = 0;
   for (TopExp_Explorer it(shape, TopAbs_EDGE); it.More(); it.Next())
