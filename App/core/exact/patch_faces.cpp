@@ -162,12 +162,8 @@ TopoDS_Shape facesFromRegion(const Region2d& region, const SliceFrame& frame, do
   const gp_Pln pln = plane(frame, position);
   for (const Region2d& piece : region.components()) {
     std::vector<Region2d::Loop> loops = piece.loops();  // outer (counter-clockwise) first
-    std::stable_partition(loops.begin(), loops.end(), [](const Region2d::Loop& l) {
-      double a = 0;
-      for (size_t i = 0; i < l.size(); ++i)
-        a += l[i].x * l[(i + 1) % l.size()].y - l[(i + 1) % l.size()].x * l[i].y;
-      return a > 0;
-    });
+    std::stable_partition(loops.begin(), loops.end(),
+                        [](const Region2d::Loop& l) { return Region2d::signedArea(l) > 0; });
     BRepBuilderAPI_MakeFace face(pln, polygonWire(loops.front(), frame, position));
     // Holes run clockwise in the frame, whose normal is the plane's: OCCT's hole sense.
     for (size_t k = 1; k < loops.size(); ++k) face.Add(polygonWire(loops[k], frame, position));

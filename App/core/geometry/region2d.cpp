@@ -183,4 +183,11 @@ std::vector<Interval> Region2d::intervalsOnLine(Vec2 point, Vec2 dir) const {
   return out;
 }
 
+double Region2d::signedArea(const Loop& loop) {
+  double twice = 0;
+  for (size_t i = 0, n = loop.size(); i < n; ++i)
+    twice += loop[i].x * loop[(i + 1) % n].y - loop[(i + 1) % n].x * loop[i].y;
+  return twice / 2;
+}
+
 }  // namespace sliceform

@@ -58,6 +58,8 @@ class Region2d {
   // x = c, this gives the W-intervals a hinge at c can use.
   std::vector<Interval> intervalsOnLine(Vec2 point, Vec2 dir) const;
 
+  // Shoelace area of one loop, mm²: positive for an outer loop, negative for a hole.
+  static double signedArea(const Loop& loop);
   static ClipperLib::cInt toUnits(double mm);
   static double toMm(ClipperLib::cInt units) { return static_cast<double>(units) / kUnitsPerMm; }
 

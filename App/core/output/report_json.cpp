@@ -27,11 +27,8 @@ const char* schemeName(Scheme s) {
 // Outer loop first, then the holes (Region2d gives them in Clipper's order).
 json outline(const Region2d& region) {
   std::vector<Region2d::Loop> loops = region.loops();
-  std::stable_partition(loops.begin(), loops.end(), [](const Region2d::Loop& l) {
-    double a = 0;
-    for (size_t i = 0; i < l.size(); ++i) a += l[i].x * l[(i + 1) % l.size()].y - l[(i + 1) % l.size()].x * l[i].y;
-    return a > 0;
-  });
+  std::stable_partition(loops.begin(), loops.end(),
+                        [](const Region2d::Loop& l) { return Region2d::signedArea(l) > 0; });
   json out = json::array();
   for (const Region2d::Loop& loop : loops) {
     json points = json::array();

@@ -6,16 +6,6 @@ namespace {
 
 constexpr double kNudge = 1e-3;  // mm a crossing point moves into its own hole
 
-double signedArea(const Region2d::Loop& loop) {
-  double s = 0;
-  for (size_t i = 0, n = loop.size(); i < n; ++i) {
-    const Vec2& p = loop[i];
-    const Vec2& q = loop[(i + 1) % n];
-    s += p.x * q.y - q.x * p.y;
-  }
-  return s / 2;
-}
-
 bool inside(const Region2d::Loop& loop, Vec2 pt) {
   bool in = false;
   for (size_t i = 0, n = loop.size(); i < n; ++i) {
@@ -30,7 +20,7 @@ bool inside(const Region2d::Loop& loop, Vec2 pt) {
 // side test is half-open (x > c against x <= c), as in Region2d::intervalsOnLine.
 std::vector<double> crossings(const Region2d::Loop& hole, double c) {
   std::vector<double> out;
-  const bool clockwise = signedArea(hole) < 0;
+  const bool clockwise = Region2d::signedArea(hole) < 0;
   for (size_t i = 0, n = hole.size(); i < n; ++i) {
     const Vec2& p = hole[i];
     const Vec2& q = hole[(i + 1) % n];
@@ -52,7 +42,7 @@ HoleLoops holeLoops(const Region2d& slotted, double position) {
   HoleLoops out;
   out.position = position;
   for (Region2d::Loop& loop : slotted.loops()) {
-    if (signedArea(loop) >= 0) continue;
+    if (Region2d::signedArea(loop) >= 0) continue;
     Box2 box;
     for (const Vec2& p : loop) {
       if (box.empty) box.min = box.max = p, box.empty = false;
