@@ -45,7 +45,8 @@ void printRealization(const Design& d, const DesignParams& params) {
   for (const PatchFace& p : d.patches) exact += p.exact ? 1 : 0;
   std::printf("patches    %d of %zu exact (from the BRep's sections), the others polygons\n", exact,
               d.patches.size());
-  std::printf("assembly   %s:", r.assemblyChecked ? "order checked pairwise" : "ORDER NOT FREE of interlocks");
+  std::printf("assembly   %s:",
+              r.assemblyChecked ? "order checked pairwise" : "ORDER NOT FREE of interlocks");
   for (const int k : r.assemblyOrder) std::printf(" %s", patchId(d.arrangement.scaffold, k).c_str());
   std::printf("\n");
 }
@@ -131,9 +132,10 @@ void runDesign(DesignOptions o) {
   if (!d.certificate.stable)
     throw Error(ErrorKind::Geometry, "the slotted design is not stable: " + d.certificate.reason);
   if (d.emitted.interlocks > 0 || d.emitted.splitPatches > 0)
-    throw Error(ErrorKind::Geometry, "the design cannot be assembled: " + std::to_string(d.emitted.interlocks) +
-                                         " interlocked loop pair(s), " + std::to_string(d.emitted.splitPatches) +
-                                         " patch(es) in pieces");
+    throw Error(ErrorKind::Geometry,
+                "the design cannot be assembled: " + std::to_string(d.emitted.interlocks) +
+                    " interlocked loop pair(s), " + std::to_string(d.emitted.splitPatches) +
+                    " patch(es) in pieces");
 }
 
 }  // namespace
@@ -141,8 +143,9 @@ void runDesign(DesignOptions o) {
 Run addDesignCommand(CLI::App& app) {
   auto o = std::make_shared<DesignOptions>();
   CLI::App* cmd =
-      app.add_subcommand("design", "Design a sliceform for the model: stable, slotted so it can be assembled, "
-                                   "with exact patches; summarise it and write it to a folder.");
+      app.add_subcommand("design",
+                         "Design a sliceform for the model: stable, slotted so it can be assembled, "
+                         "with exact patches; summarise it and write it to a folder.");
   addModelOptions(cmd, *o);
   cmd->add_option("-o,--output", o->output,
                   "folder to write report.json, timings.json, assembly.step and assembly.brep into "
@@ -153,7 +156,8 @@ Run addDesignCommand(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("-n,--slices", o->params.arrangement.slices, "slices per direction")->capture_default_str();
   cmd->add_option("--interval", o->params.arrangement.interval, "slice interval in mm (overrides --slices)");
-  cmd->add_option("--tau-a", o->params.arrangement.tauA, "cylinder error budget, relative to each part's volume")
+  cmd->add_option("--tau-a", o->params.arrangement.tauA,
+                  "cylinder error budget, relative to each part's volume")
       ->capture_default_str();
   cmd->add_option("--tau-m", o->params.arrangement.tauM, "Reeb branch merge threshold (weight ratio)")
       ->capture_default_str();
@@ -175,11 +179,13 @@ Run addDesignCommand(CLI::App& app) {
   cmd->add_option("--slot-end", o->slotEnd, "square, or round closed slot ends")
       ->check(CLI::IsMember({"square", "round"}))
       ->capture_default_str();
-  cmd->add_option("--u-slots", o->uSlots, "up or down: which way U-patches are slotted first (V the other way)")
+  cmd->add_option("--u-slots", o->uSlots,
+                  "up or down: which way U-patches are slotted first (V the other way)")
       ->check(CLI::IsMember({"up", "down"}))
       ->capture_default_str();
-  cmd->add_option("--fold-angle", o->foldAngle, "degrees between the families in the 3D assembly: 90 is "
-                                                "popped up, small angles fold it flat")
+  cmd->add_option("--fold-angle", o->foldAngle,
+                  "degrees between the families in the 3D assembly: 90 is "
+                  "popped up, small angles fold it flat")
       ->capture_default_str();
   cmd->add_option("--max-spacing", o->params.arrangement.stabilize.maxSpacing,
                   "mm; add patches in long cylinders so none is farther apart (0: off)")

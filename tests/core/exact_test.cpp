@@ -53,8 +53,12 @@ void expectBuildable(const TopoDS_Shape& shape) {
   EXPECT_EQ(e.splitPatches, 0);
 }
 
-TEST(ExactPatches, HollowSphereIsBuildable) { expectBuildable(test::makeHollowSphere(60, 45)); }
-TEST(ExactPatches, BoxWithWindowsIsBuildable) { expectBuildable(test::makeBoxWithWindows(120, 80, 60, 6)); }
+TEST(ExactPatches, HollowSphereIsBuildable) {
+  expectBuildable(test::makeHollowSphere(60, 45));
+}
+TEST(ExactPatches, BoxWithWindowsIsBuildable) {
+  expectBuildable(test::makeBoxWithWindows(120, 80, 60, 6));
+}
 
 int edgesOfType(const TopoDS_Shape& shape, GeomAbs_CurveType type) {
   int n = 0;
@@ -105,7 +109,8 @@ TEST(ExactPatches, SphereKeepsCircularArcsAndSlotWidth) {
 
 // Mesh sources keep their polygons: one planar face per patch, holes included.
 TEST(ExactPatches, PolygonFacesOfAMesh) {
-  const Region2d square = Region2d::fromLoops({{{0, 0}, {40, 0}, {40, 40}, {0, 40}}, {{10, 10}, {10, 30}, {30, 30}, {30, 10}}});
+  const Region2d square =
+      Region2d::fromLoops({{{0, 0}, {40, 0}, {40, 40}, {0, 40}}, {{10, 10}, {10, 30}, {30, 30}, {30, 10}}});
   const SliceFrame frame = makeSliceFrame({1, 0, 0}, {0, 0, 1});
   const TopoDS_Shape face = facesFromRegion(square, frame, 7);
   GProp_GProps props;
@@ -118,7 +123,8 @@ TEST(ExactPatches, PolygonFacesOfAMesh) {
 }
 
 TEST(ExactPatches, KerfMovesCutPathsAwayFromThePaper) {
-  const Region2d square = Region2d::fromLoops({{{0, 0}, {40, 0}, {40, 40}, {0, 40}}, {{10, 10}, {10, 30}, {30, 30}, {30, 10}}});
+  const Region2d square =
+      Region2d::fromLoops({{{0, 0}, {40, 0}, {40, 40}, {0, 40}}, {{10, 10}, {10, 30}, {30, 30}, {30, 10}}});
   const SliceFrame frame = makeSliceFrame({1, 0, 0}, {0, 0, 1});
   const TopoDS_Shape path = kerfCompensated(facesFromRegion(square, frame, 0), 0.2);
   std::vector<double> spans;

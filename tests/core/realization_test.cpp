@@ -60,8 +60,8 @@ RealizationInput handMade(const std::vector<PatchShape>& patches) {
 // Paper Fig. 3: two rings at right angles through each other, joined where they cross.
 // Slotting both joints the same way (U up, V down) leaves them linked.
 TEST(Interlock, CrossedRingsAreDetectedAndRepaired) {
-  const RealizationInput in = handMade({{Family::U, 0, annulus(0, 0, 15, 25)},
-                                        {Family::V, 0, annulus(0, 0, 15, 25)}});
+  const RealizationInput in =
+      handMade({{Family::U, 0, annulus(0, 0, 15, 25)}, {Family::V, 0, annulus(0, 0, 15, 25)}});
   ASSERT_EQ(in.hinges.size(), 2u);
   const Realization r = realize(in, SlotParams{});
   EXPECT_GT(r.interlocks.found, 0);
@@ -94,8 +94,8 @@ TEST(Interlock, LinkedRingsNeedACutThrough) {
 // The slots of one hinge: the U-patch cleared above the root, the V-patch below, each
 // exactly thickness + clearance wide, and paper left where the other has its slot.
 TEST(Slots, WidthIsThicknessPlusClearance) {
-  const RealizationInput in = handMade({{Family::U, 0, rect(-20, 0, 20, 40)},
-                                        {Family::V, 5, rect(-20, 0, 20, 40)}});
+  const RealizationInput in =
+      handMade({{Family::U, 0, rect(-20, 0, 20, 40)}, {Family::V, 5, rect(-20, 0, 20, 40)}});
   ASSERT_EQ(in.hinges.size(), 1u);
   SlotParams params;
   params.thickness = 3;  // plywood
@@ -128,8 +128,8 @@ TEST(Slots, WidthIsThicknessPlusClearance) {
 }
 
 TEST(Slots, RoundEndsStayWithinTheSlot) {
-  const RealizationInput in = handMade({{Family::U, 0, rect(-20, 0, 20, 40)},
-                                        {Family::V, 5, rect(-20, 0, 20, 40)}});
+  const RealizationInput in =
+      handMade({{Family::U, 0, rect(-20, 0, 20, 40)}, {Family::V, 5, rect(-20, 0, 20, 40)}});
   SlotParams square, round;
   round.end = SlotEnd::Round;
   const Realization a = realize(in, square), b = realize(in, round);
@@ -172,9 +172,15 @@ void expectRealizable(const TopoDS_Shape& shape, int slices = 48) {
   }
 }
 
-TEST(RealizeSolids, HollowSphere) { expectRealizable(makeHollowSphere(60, 45)); }
-TEST(RealizeSolids, Torus) { expectRealizable(makeTorus(60, 20)); }
-TEST(RealizeSolids, BoxWithWindows) { expectRealizable(test::makeBoxWithWindows(120, 80, 60, 6)); }
+TEST(RealizeSolids, HollowSphere) {
+  expectRealizable(makeHollowSphere(60, 45));
+}
+TEST(RealizeSolids, Torus) {
+  expectRealizable(makeTorus(60, 20));
+}
+TEST(RealizeSolids, BoxWithWindows) {
+  expectRealizable(test::makeBoxWithWindows(120, 80, 60, 6));
+}
 
 }  // namespace
 }  // namespace sliceform

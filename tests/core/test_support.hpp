@@ -126,8 +126,9 @@ inline TopoDS_Shape makeBoxWithHoles(double a, double b, double c, const std::ve
 // A hollow box a x b x c with walls `wall` thick, and two square windows through each of
 // its four side walls: every slice across it is a frame with holes.
 inline TopoDS_Shape makeBoxWithWindows(double a, double b, double c, double wall) {
-  TopoDS_Shape shape = cut(BRepPrimAPI_MakeBox(a, b, c).Shape(),
-                           BRepPrimAPI_MakeBox(gp_Pnt(wall, wall, wall), a - 2 * wall, b - 2 * wall, c - 2 * wall).Shape());
+  TopoDS_Shape shape =
+      cut(BRepPrimAPI_MakeBox(a, b, c).Shape(),
+          BRepPrimAPI_MakeBox(gp_Pnt(wall, wall, wall), a - 2 * wall, b - 2 * wall, c - 2 * wall).Shape());
   const double s = c / 3;  // window side
   for (int k = 1; k <= 2; ++k) {
     shape = cut(shape, BRepPrimAPI_MakeBox(gp_Pnt(k * a / 3 - s / 2, -1, c / 3), s, b + 2, s).Shape());

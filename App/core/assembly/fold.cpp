@@ -57,7 +57,8 @@ TopoDS_Shape assemble(const Arrangement& a, const std::vector<PatchFace>& patche
   builder.MakeCompound(all);
   for (size_t k = 0; k < patches.size(); ++k)
     if (!patches[k].shape.IsNull())
-      builder.Add(all, patches[k].shape.Moved(TopLoc_Location(foldTransform(a, static_cast<int>(k), thetaDegrees))));
+      builder.Add(
+          all, patches[k].shape.Moved(TopLoc_Location(foldTransform(a, static_cast<int>(k), thetaDegrees))));
   return all;
 }
 

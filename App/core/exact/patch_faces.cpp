@@ -91,8 +91,8 @@ TopoDS_Shape boolean(const std::vector<TopoDS_Shape>& arguments, const std::vect
     if (!op.IsDone() || op.HasErrors()) {
       std::ostringstream report;
       op.DumpErrors(report);
-      throw Error(ErrorKind::Geometry, std::string(cutting ? "cutting slots" : "fusing sections") +
-                                           " failed: " + report.str());
+      throw Error(ErrorKind::Geometry,
+                  std::string(cutting ? "cutting slots" : "fusing sections") + " failed: " + report.str());
     }
     ShapeUpgrade_UnifySameDomain unify(op.Shape(), Standard_True, Standard_True, Standard_False);
     unify.Build();
@@ -133,8 +133,8 @@ TopoDS_Shape exactSection(const Cylinder& cylinder, const std::map<int, ExactSli
     const ExactSlice& s = slices.at(k);
     if (s.faces.IsNull()) continue;
     gp_Trsf onto;
-    onto.SetTranslation(gp_Vec(-frame.normal.x * s.position, -frame.normal.y * s.position,
-                               -frame.normal.z * s.position));
+    onto.SetTranslation(
+        gp_Vec(-frame.normal.x * s.position, -frame.normal.y * s.position, -frame.normal.z * s.position));
     for (const TopoDS_Shape& f : faces(s.faces)) {
       const Region2d poly = polygoniseFaces(f, frame, deflection);
       if (poly.intersect(near).area() >= 0.5 * poly.area()) own.push_back(f.Moved(TopLoc_Location(onto)));
@@ -163,7 +163,7 @@ TopoDS_Shape facesFromRegion(const Region2d& region, const SliceFrame& frame, do
   for (const Region2d& piece : region.components()) {
     std::vector<Region2d::Loop> loops = piece.loops();  // outer (counter-clockwise) first
     std::stable_partition(loops.begin(), loops.end(),
-                        [](const Region2d::Loop& l) { return Region2d::signedArea(l) > 0; });
+                          [](const Region2d::Loop& l) { return Region2d::signedArea(l) > 0; });
     BRepBuilderAPI_MakeFace face(pln, polygonWire(loops.front(), frame, position));
     // Holes run clockwise in the frame, whose normal is the plane's: OCCT's hole sense.
     for (size_t k = 1; k < loops.size(); ++k) face.Add(polygonWire(loops[k], frame, position));
@@ -200,7 +200,8 @@ std::vector<PatchFace> exactPatches(const Model& model, const Arrangement& a, co
       for (size_t i = 0; i < needed.size(); ++i) into[needed[i]] = cut[i];
     }
     std::vector<std::pair<int, int>> keys;
-    for (const ScaffoldPatch& p : scaffold.patches) keys.push_back({p.family == Family::U ? 0 : 1, p.cylinder});
+    for (const ScaffoldPatch& p : scaffold.patches)
+      keys.push_back({p.family == Family::U ? 0 : 1, p.cylinder});
     std::sort(keys.begin(), keys.end());
     keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
     std::vector<TopoDS_Shape> built(keys.size());
@@ -228,8 +229,8 @@ std::vector<PatchFace> exactPatches(const Model& model, const Arrangement& a, co
     }
     occtGuard("cutting the slots of a patch", [&] {
       gp_Trsf onto;
-      onto.SetTranslation(gp_Vec(frame.normal.x * p.position, frame.normal.y * p.position,
-                                 frame.normal.z * p.position));
+      onto.SetTranslation(
+          gp_Vec(frame.normal.x * p.position, frame.normal.y * p.position, frame.normal.z * p.position));
       const TopoDS_Shape section =
           sections.at({p.family == Family::U ? 0 : 1, p.cylinder}).Moved(TopLoc_Location(onto));
       const std::vector<TopoDS_Shape> tools = slotFaces(slotShapes(r.cuts[k], r.params), frame, p.position);

@@ -17,9 +17,12 @@ json vec(const Vec3& v) {
 
 const char* schemeName(Scheme s) {
   switch (s) {
-    case Scheme::DominantU: return "U";
-    case Scheme::DominantV: return "V";
-    case Scheme::Both: return "both";
+    case Scheme::DominantU:
+      return "U";
+    case Scheme::DominantV:
+      return "V";
+    case Scheme::Both:
+      return "both";
   }
   return "both";
 }

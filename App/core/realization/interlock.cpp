@@ -34,7 +34,9 @@ std::vector<double> crossings(const Region2d::Loop& hole, double c) {
   return out;
 }
 
-bool spans(const Box2& box, double x) { return !box.empty && box.min.x <= x && x <= box.max.x; }
+bool spans(const Box2& box, double x) {
+  return !box.empty && box.min.x <= x && x <= box.max.x;
+}
 
 }  // namespace
 
@@ -55,7 +57,8 @@ HoleLoops holeLoops(const Region2d& slotted, double position) {
   return out;
 }
 
-int interlockCount(const HoleLoops& a, const SliceFrame& uFrame, const HoleLoops& b, const SliceFrame& vFrame) {
+int interlockCount(const HoleLoops& a, const SliceFrame& uFrame, const HoleLoops& b,
+                   const SliceFrame& vFrame) {
   if (a.holes.empty() || b.holes.empty()) return 0;
   const double xa = lineX(uFrame, vFrame, b.position);  // H in A's coordinates
   const double xb = lineX(vFrame, uFrame, a.position);  // H in B's coordinates

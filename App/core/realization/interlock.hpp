@@ -27,6 +27,7 @@ HoleLoops holeLoops(const Region2d& slotted, double position);
 
 // Interlocked (a, b) hole pairs of U-patch a and V-patch b; uFrame and vFrame are the
 // families' slice frames (they share the y axis W).
-int interlockCount(const HoleLoops& a, const SliceFrame& uFrame, const HoleLoops& b, const SliceFrame& vFrame);
+int interlockCount(const HoleLoops& a, const SliceFrame& uFrame, const HoleLoops& b,
+                   const SliceFrame& vFrame);
 
 }  // namespace sliceform

@@ -27,8 +27,12 @@ struct Score {
 
 using Move = std::vector<std::pair<int, SlotPair>>;  // (hinge, new combination)
 
-bool isUpDown(SlotPair s) { return s == SlotPair::UpDown || s == SlotPair::DownUp; }
-SlotPair flipped(SlotPair s) { return s == SlotPair::UpDown ? SlotPair::DownUp : SlotPair::UpDown; }
+bool isUpDown(SlotPair s) {
+  return s == SlotPair::UpDown || s == SlotPair::DownUp;
+}
+SlotPair flipped(SlotPair s) {
+  return s == SlotPair::UpDown ? SlotPair::DownUp : SlotPair::UpDown;
+}
 
 double distanceToSegment(Vec2 p, Vec2 a, Vec2 b) {
   const Vec2 d{b.x - a.x, b.y - a.y};
@@ -121,7 +125,8 @@ class Search {
     for (const int p : {hinge.u, hinge.v}) {
       const int other = p == hinge.u ? hinge.v : hinge.u;
       const bool isU = in_.patches[p].family == Family::U;
-      const double x = lineX(isU ? in_.uFrame : in_.vFrame, isU ? in_.vFrame : in_.uFrame, in_.patches[other].position);
+      const double x =
+          lineX(isU ? in_.uFrame : in_.vFrame, isU ? in_.vFrame : in_.uFrame, in_.patches[other].position);
       for (const Interval& i : intersectIntervals(slotted_[p].intervalsOnLine({x, 0}, {0, 1}), {hinge.w}))
         covered += i.hi - i.lo;
     }
@@ -236,8 +241,10 @@ class Search {
       for (const int h : common) out[0].push_back({{h, flipped(slots_[h])}});
     }
     for (const int h : others) {
-      if (isUpDown(slots_[h])) out[1].push_back({{h, flipped(slots_[h])}});
-      else out[1].push_back({{h, SlotPair::UpDown}});  // undo an earlier cut-through
+      if (isUpDown(slots_[h]))
+        out[1].push_back({{h, flipped(slots_[h])}});
+      else
+        out[1].push_back({{h, SlotPair::UpDown}});  // undo an earlier cut-through
     }
     std::vector<int> all = common;
     all.insert(all.end(), others.begin(), others.end());
@@ -303,7 +310,8 @@ class Search {
       for (int p = 0; p < n_; ++p) {
         if (placed[p]) continue;
         const auto key = [&](int q) {
-          return std::make_tuple(-links[q], in_.patches[q].family == Family::U ? 0 : 1, in_.patches[q].position);
+          return std::make_tuple(-links[q], in_.patches[q].family == Family::U ? 0 : 1,
+                                 in_.patches[q].position);
         };
         if (pick < 0 || key(p) < key(pick)) pick = p;
       }
@@ -347,7 +355,8 @@ class Search {
 
 }  // namespace
 
-std::vector<PatchHinge> patchHinges(const RealizationInput& input, const std::vector<SlotPair>& slots, int patch) {
+std::vector<PatchHinge> patchHinges(const RealizationInput& input, const std::vector<SlotPair>& slots,
+                                    int patch) {
   std::vector<PatchHinge> out;
   const PatchShape& p = input.patches[patch];
   const bool isU = p.family == Family::U;

@@ -44,25 +44,25 @@ struct RealizationInput {
 RealizationInput realizationInput(const Arrangement& arrangement, double tolerance);
 
 struct InterlockStats {
-  int found = 0;        // interlocked hole pairs with the default slots
-  int repaired = 0;     // found - remaining
+  int found = 0;     // interlocked hole pairs with the default slots
+  int repaired = 0;  // found - remaining
   int remaining = 0;
   int cutThroughs = 0;  // hinges cut through to break a loop
 };
 
 struct Realization {
   SlotParams params;
-  std::vector<SlotPair> slots;              // per hinge
-  std::vector<std::vector<SlotCut>> cuts;   // per patch, in its frame
-  std::vector<Region2d> slotted;            // per patch: shape minus slots, crumbs dropped
+  std::vector<SlotPair> slots;             // per hinge
+  std::vector<std::vector<SlotCut>> cuts;  // per patch, in its frame
+  std::vector<Region2d> slotted;           // per patch: shape minus slots, crumbs dropped
   InterlockStats interlocks;
-  int splitPatches = 0;                     // patches in more than one piece (must be 0)
-  std::vector<bool> meets;                  // per hinge: the slotted patches still meet along it
-  int lostPins = 0;                         // pairs whose every holding hinge stopped meeting
-  double minSlotEdgeDistance = 0;           // mm of paper left around slot roots of holding hinges
-  double shortestHinge = 0;                 // mm, over holding hinges
-  std::vector<int> assemblyOrder;           // patch indices
-  bool assemblyChecked = false;             // each patch added is free of the ones placed
+  int splitPatches = 0;            // patches in more than one piece (must be 0)
+  std::vector<bool> meets;         // per hinge: the slotted patches still meet along it
+  int lostPins = 0;                // pairs whose every holding hinge stopped meeting
+  double minSlotEdgeDistance = 0;  // mm of paper left around slot roots of holding hinges
+  double shortestHinge = 0;        // mm, over holding hinges
+  std::vector<int> assemblyOrder;  // patch indices
+  bool assemblyChecked = false;    // each patch added is free of the ones placed
 };
 
 Realization realize(const RealizationInput& input, const SlotParams& params);
@@ -75,6 +75,7 @@ struct Emitted {
 Emitted checkEmitted(const RealizationInput& input, const std::vector<Region2d>& outlines);
 
 // The hinges of one patch as planSlots sees them, with the given slot choices.
-std::vector<PatchHinge> patchHinges(const RealizationInput& input, const std::vector<SlotPair>& slots, int patch);
+std::vector<PatchHinge> patchHinges(const RealizationInput& input, const std::vector<SlotPair>& slots,
+                                    int patch);
 
 }  // namespace sliceform

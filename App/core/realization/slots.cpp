@@ -72,30 +72,42 @@ void checkSlotParams(const SlotParams& p) {
 
 const char* slotName(Slot slot) {
   switch (slot) {
-    case Slot::Up: return "up";
-    case Slot::Down: return "down";
-    case Slot::Through: return "through";
-    case Slot::None: return "none";
+    case Slot::Up:
+      return "up";
+    case Slot::Down:
+      return "down";
+    case Slot::Through:
+      return "through";
+    case Slot::None:
+      return "none";
   }
   return "none";
 }
 
 Slot uSlot(SlotPair pair) {
   switch (pair) {
-    case SlotPair::UpDown: return Slot::Up;
-    case SlotPair::DownUp: return Slot::Down;
-    case SlotPair::ThroughNone: return Slot::Through;
-    case SlotPair::NoneThrough: return Slot::None;
+    case SlotPair::UpDown:
+      return Slot::Up;
+    case SlotPair::DownUp:
+      return Slot::Down;
+    case SlotPair::ThroughNone:
+      return Slot::Through;
+    case SlotPair::NoneThrough:
+      return Slot::None;
   }
   return Slot::None;
 }
 
 Slot vSlot(SlotPair pair) {
   switch (pair) {
-    case SlotPair::UpDown: return Slot::Down;
-    case SlotPair::DownUp: return Slot::Up;
-    case SlotPair::ThroughNone: return Slot::None;
-    case SlotPair::NoneThrough: return Slot::Through;
+    case SlotPair::UpDown:
+      return Slot::Down;
+    case SlotPair::DownUp:
+      return Slot::Up;
+    case SlotPair::ThroughNone:
+      return Slot::None;
+    case SlotPair::NoneThrough:
+      return Slot::Through;
   }
   return Slot::None;
 }
@@ -170,7 +182,8 @@ Region2d slotRegion(const std::vector<SlotCut>& cuts, const SlotParams& params) 
 
 int pieceCount(const Region2d& region, double neck, double crumb) {
   int n = 0;
-  for (const Region2d& piece : region.offset(-neck).offset(neck).components()) n += piece.area() >= crumb ? 1 : 0;
+  for (const Region2d& piece : region.offset(-neck).offset(neck).components())
+    n += piece.area() >= crumb ? 1 : 0;
   return n;
 }
 

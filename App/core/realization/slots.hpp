@@ -32,7 +32,7 @@ struct SlotParams {
   double clearance = 0.2;  // mm added so the partner slides in
   double kerf = 0;         // mm the cutter removes; outputs compensate half of it per side
   SlotEnd end = SlotEnd::Square;
-  bool uUp = true;         // the first try: U-patches slotted up (+W), V-patches down
+  bool uUp = true;  // the first try: U-patches slotted up (+W), V-patches down
   double width() const { return thickness + clearance; }
 };
 
@@ -42,9 +42,9 @@ void checkSlotParams(const SlotParams& params);
 
 // One hinge as a patch sees it.
 struct PatchHinge {
-  double x = 0;    // the hinge line
-  Interval w;      // the hinge segment along the line
-  double root = 0; // where up/down slots start: middle of the grip, or of the segment
+  double x = 0;     // the hinge line
+  Interval w;       // the hinge segment along the line
+  double root = 0;  // where up/down slots start: middle of the grip, or of the segment
   Slot slot = Slot::None;
 };
 
