@@ -43,7 +43,7 @@ void printRealization(const Design& d, const DesignParams& params) {
               params.slots.width(), r.minSlotEdgeDistance, r.shortestHinge);
   int exact = 0;
   for (const PatchFace& p : d.patches) exact += p.exact ? 1 : 0;
-  std::printf("patches    %d of %zu exact (from the BRep's sections), the others polygons\n", exact,
+  std::printf("exact      %d of %zu patches from the BRep's exact sections, the others polygons\n", exact,
               d.patches.size());
   std::printf("assembly   %s:",
               r.assemblyChecked ? "order checked pairwise" : "ORDER NOT FREE of interlocks");

@@ -60,6 +60,7 @@ class Search {
       hingesOf_[in.hinges[h].v].push_back(h);
     }
     slots_.assign(in.hinges.size(), params.uUp ? SlotPair::UpDown : SlotPair::DownUp);
+    for (const PatchShape& p : in.patches) cutters_.emplace_back(p.shape, params, in.tolerance);
     cuts_.resize(n_);
     slotted_.resize(n_);
     pieces_.assign(n_, 1);
@@ -68,6 +69,8 @@ class Search {
     for (int p = 0; p < n_; ++p) evaluatePatch(p);
     for (int p = 0; p < n_; ++p)
       if (in.patches[p].family == Family::U) refreshLocks(p);
+    meets_.resize(in.hinges.size());
+    for (size_t h = 0; h < meets_.size(); ++h) meets_[h] = meets(static_cast<int>(h));
   }
 
   void run() {
@@ -90,7 +93,7 @@ class Search {
     const Score s = score();
     r.interlocks = {found_, std::max(0, found_ - s.interlocks), s.interlocks, s.cutThroughs};
     for (int p = 0; p < n_; ++p) r.splitPatches += pieces_[p] > 1 ? 1 : 0;
-    r.meets = meetsAll();
+    r.meets.assign(meets_.begin(), meets_.end());
     r.lostPins = static_cast<int>(lostPins().size());
     measure(r);
     order(r);
@@ -103,7 +106,7 @@ class Search {
   void evaluatePatch(int p) {
     const PatchShape& ps = in_.patches[p];
     cuts_[p] = planSlots(ps.shape, patchHinges(in_, slots_, p), params_);
-    slotted_[p] = cutSlots(ps.shape, slotRegion(cuts_[p], params_), params_, in_.tolerance, &pieces_[p]);
+    slotted_[p] = cutters_[p].cut(slotRegion(cuts_[p], params_), &pieces_[p]);
     holes_[p] = holeLoops(slotted_[p], ps.position);
   }
 
@@ -133,12 +136,6 @@ class Search {
     return covered >= 0.9 * (hinge.w.hi - hinge.w.lo);
   }
 
-  std::vector<bool> meetsAll() const {
-    std::vector<bool> out(in_.hinges.size());
-    for (size_t h = 0; h < out.size(); ++h) out[h] = meets(static_cast<int>(h));
-    return out;
-  }
-
   // Pairs that had a holding hinge and have none left whose patches meet.
   std::set<std::pair<int, int>> lostPins() const {
     std::set<std::pair<int, int>> had, kept;
@@ -146,7 +143,7 @@ class Search {
       const ScaffoldHinge& hinge = in_.hinges[h];
       if (!hinge.holds) continue;
       had.insert({hinge.u, hinge.v});
-      if (meets(static_cast<int>(h))) kept.insert({hinge.u, hinge.v});
+      if (meets_[h]) kept.insert({hinge.u, hinge.v});
     }
     std::set<std::pair<int, int>> lost;
     for (const auto& pair : had)
@@ -179,6 +176,7 @@ class Search {
   Score apply(const Move& move) {
     saved_.clear();
     savedLocks_ = locks_;
+    savedMeets_ = meets_;
     std::set<int> touched;
     for (const auto& [h, pair] : move) {
       saved_.push_back({h, slots_[h]});
@@ -191,7 +189,10 @@ class Search {
       savedPatches_.push_back({p, cuts_[p], slotted_[p], pieces_[p], holes_[p]});
       evaluatePatch(p);
     }
-    for (const int p : touched) refreshLocks(p);
+    for (const int p : touched) {
+      refreshLocks(p);
+      for (const int h : hingesOf_[p]) meets_[h] = meets(h);  // only these can change
+    }
     return score();
   }
 
@@ -204,6 +205,7 @@ class Search {
       holes_[s.patch] = std::move(s.holes);
     }
     locks_ = savedLocks_;
+    meets_ = savedMeets_;
   }
 
   // Whether hinge h may be cut through: not the last holding up/down hinge of its pair.
@@ -342,6 +344,7 @@ class Search {
   int n_;
   std::vector<std::vector<int>> hingesOf_;
   std::vector<SlotPair> slots_;
+  std::vector<SlotCutter> cutters_;  // per patch
   std::vector<std::vector<SlotCut>> cuts_;
   std::vector<Region2d> slotted_;
   std::vector<int> pieces_;
@@ -351,6 +354,7 @@ class Search {
   std::vector<std::pair<int, SlotPair>> saved_;
   std::vector<SavedPatch> savedPatches_;
   std::vector<int> savedLocks_;
+  std::vector<char> meets_, savedMeets_;  // per hinge: meets(h), kept up to date by apply()
 };
 
 }  // namespace

@@ -180,6 +180,8 @@ Region2d slotRegion(const std::vector<SlotCut>& cuts, const SlotParams& params) 
   return Region2d::fromPaths(paths, FillRule::NonZero);
 }
 
+namespace {
+
 int pieceCount(const Region2d& region, double neck, double crumb) {
   int n = 0;
   for (const Region2d& piece : region.offset(-neck).offset(neck).components())
@@ -187,23 +189,26 @@ int pieceCount(const Region2d& region, double neck, double crumb) {
   return n;
 }
 
-Region2d cutSlots(const Region2d& shape, const Region2d& slots, const SlotParams& params, double tolerance,
-                  int* pieces) {
-  const Region2d cut = shape.subtract(slots);
-  const double crumb = std::max(0.5, params.width() * params.width());
+}  // namespace
+
+// A bridge of paper narrower than the neck is no bridge: a slot wall that grazes a hole
+// leaves 0.3 mm on the polygons, and nothing at all on the exact faces (occ/Ball.brep):
+// the polygons may stray `tolerance` from the true shape. The slotted region's opened
+// pieces are counted against the shape's own, counted once here.
+SlotCutter::SlotCutter(const Region2d& shape, const SlotParams& params, double tolerance)
+    : shape_(shape),
+      crumb_(std::max(0.5, params.width() * params.width())),
+      neck_(std::max(0.1, params.thickness / 2) + tolerance),
+      shapePieces_(pieceCount(shape, neck_, crumb_)) {}
+
+Region2d SlotCutter::cut(const Region2d& slots, int* pieces) const {
+  const Region2d cut = shape_.subtract(slots);
   std::vector<Region2d> kept;
   for (Region2d& piece : cut.components())
-    if (piece.area() >= crumb) kept.push_back(std::move(piece));
+    if (piece.area() >= crumb_) kept.push_back(std::move(piece));
   const Region2d out = kept.size() == 1 ? kept.front() : Region2d::uniteAll(kept);
-  if (pieces) {
-    // A bridge of paper narrower than the neck is no bridge: a slot wall that grazes a
-    // hole leaves 0.3 mm on the polygons, and nothing at all on the exact faces
-    // (occ/Ball.brep): the polygons may stray `tolerance` from the true shape. Count the
-    // pieces of the opened region, against the shape's own.
-    const double neck = std::max(0.1, params.thickness / 2) + tolerance;
-    *pieces = std::max(static_cast<int>(kept.size()),
-                       pieceCount(out, neck, crumb) - pieceCount(shape, neck, crumb) + 1);
-  }
+  if (pieces)
+    *pieces = std::max(static_cast<int>(kept.size()), pieceCount(out, neck_, crumb_) - shapePieces_ + 1);
   return out;
 }
 

@@ -81,7 +81,15 @@ Region2d slotRegion(const std::vector<SlotCut>& cuts, const SlotParams& params);
 // number of pieces that remain, which must be 1; a bridge narrower than the material
 // thickness (at least 0.2 mm) plus twice `tolerance` (how far the polygons may stray from
 // the true shape) counts as cut, unless the shape had it before the slots.
-Region2d cutSlots(const Region2d& shape, const Region2d& slots, const SlotParams& params, double tolerance,
-                  int* pieces);
+class SlotCutter {
+ public:
+  SlotCutter(const Region2d& shape, const SlotParams& params, double tolerance);
+  Region2d cut(const Region2d& slots, int* pieces) const;
+
+ private:
+  Region2d shape_;
+  double crumb_, neck_;
+  int shapePieces_;  // of the opened shape, before any slot
+};
 
 }  // namespace sliceform
