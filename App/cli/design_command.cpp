@@ -1,10 +1,12 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // `sliceform design MODEL -o DIR`: arranges a stable sliceform scaffold (§4), slots it so
-// it can be assembled (§5), builds the exact patches, and prints a summary: patches,
-// hinges, the certificate, interlocks, slots, quality, time per stage. With -o it writes
-// report.json, timings.json and the 3D assembly (assembly.step, assembly.brep) into DIR.
+// it can be assembled (§5), builds the exact patches, lays them out on sheets and prints a
+// summary: patches, hinges, the certificate, interlocks, slots, quality, sheets, time per
+// stage. With -o it writes everything a maker needs into DIR (see kOutputs).
 #include <algorithm>
+#include <chrono>
 #include <cstdio>
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -16,15 +18,52 @@
 #include "assembly/fold.hpp"
 #include "cli/commands.hpp"
 #include "output/report_json.hpp"
+#include "output/sheets_cairo.hpp"
 #include "pipeline/design.hpp"
 #include "support/error.hpp"
 
 namespace sliceform::cli {
 namespace {
 
+constexpr const char* kManual = R"(What it does:
+  Slices the model into two families of parallel patches (U and V), keeps a set that holds
+  together (the rigidity certificate), cuts a slot at every joint so the patches slide
+  together without locking into each other, lays them out on sheets with labels, and
+  writes the files below. The summary on stdout says what was found; the exit code says
+  whether the design can be built.
+
+Files written into the -o folder:
+  sheets.pdf        every sheet, one page each, at 1:1: print at 100 % (actual size) and
+                    check the 50 mm bar in the bottom margin
+  sheet-N.svg       sheet N for laser cutters and vinyl plotters, in mm: red = cut,
+                    blue = engrave (the patch id, and beside each slot the partner's id)
+  sheet-N.dxf       the same in DXF (layers CUT and ENGRAVE, mm, arcs as arcs)
+  sheets.png        a preview of all sheets
+  assembly.png      a picture of the assembled sliceform
+  assembly.step     the assembled sliceform at --fold-angle, for CAD; assembly.brep the same
+  assembly.glb      the same for viewers (glTF, metres)
+  report.json       the design, documented in docs/report-format.md; same input, same bytes
+  timings.json      time per stage
+
+Assembling: put the patches together in report.json's assembly_order, each slot onto the
+partner whose id is engraved beside it.
+
+Exit codes:
+  0  the design is written and can be built
+  1  the design cannot be built (not stable, loops interlock, a patch falls apart: the
+     files are still written so it can be looked at), or an internal error
+  2  wrong command line
+  3  the model cannot be used (unreadable, not a closed solid, ...)
+  4  a parameter is out of range (also: a patch larger than the sheet)
+  5  an output cannot be written)";
+
 struct DesignOptions : ModelOptions {
   std::string output;
   double size = 150;
+  double height = 0;
+  std::string sheet = "A4";
+  double margin = 10, spacing = 3;
+  bool noRotate = false;
   std::string scheme = "both";
   std::string slotEnd = "square";
   std::string uSlots = "up";
@@ -51,23 +90,90 @@ void printRealization(const Design& d, const DesignParams& params) {
   std::printf("\n");
 }
 
+std::string sheetFile(int sheet, const char* extension) {
+  return "sheet-" + std::to_string(sheet + 1) + extension;
+}
+
+// Sheet files of an earlier, longer run would be cut by mistake: remove those beyond this
+// run's count (only names this command writes), and say so.
+void removeStaleSheets(const std::filesystem::path& dir, int sheets) {
+  for (const char* extension : {".svg", ".dxf"})
+    for (int k = sheets;; ++k) {
+      const std::filesystem::path stale = dir / sheetFile(k, extension);
+      if (!std::filesystem::is_regular_file(stale)) break;
+      std::filesystem::remove(stale);
+      std::printf("removed    %s, left by an earlier run with more sheets\n", stale.string().c_str());
+    }
+}
+
 void writeOutputs(const Model& model, const DesignParams& params, const Design& d, const DesignOptions& o) {
   std::filesystem::create_directories(o.output);
   const std::filesystem::path dir(o.output);
   writeJson(reportJson(model, params, d), (dir / "report.json").string());
   writeJson(timingsJson(d), (dir / "timings.json").string());
+  const std::vector<SheetDrawing> sheets = sheetDrawings(d.layout);
+  writeSheetsPdf(sheets, d.layout.sheet, (dir / "sheets.pdf").string());
+  writeSheetsPng(sheets, d.layout.sheet, (dir / "sheets.png").string());
+  for (size_t k = 0; k < sheets.size(); ++k)
+    writeSheetSvg(sheets[k], d.layout.sheet, (dir / sheetFile(k, ".svg")).string());
+  removeStaleSheets(dir, static_cast<int>(sheets.size()));
   const TopoDS_Shape assembly = assemble(d.arrangement, d.patches, o.foldAngle);
   writeShape(assembly, (dir / "assembly.step").string());
   writeShape(assembly, (dir / "assembly.brep").string());
-  std::printf("wrote      %s: report.json, timings.json, assembly.step and assembly.brep at %g degrees\n",
-              o.output.c_str(), o.foldAngle);
+  std::printf(
+      "wrote      %s: report.json, timings.json, sheets.pdf, sheets.png, sheet-1..%zu.svg; "
+      "assembly.step and assembly.brep at %g degrees\n",
+      o.output.c_str(), sheets.size(), o.foldAngle);
+}
+
+void printLayout(const SheetLayout& l) {
+  int missing = 0, partners = 0;
+  for (const FlatPatch& p : l.patches)
+    missing += p.partnersMissing, partners += static_cast<int>(p.partners.size());
+  std::printf("sheets     %d %s (%.0f x %.0f mm), %.0f %% used; shelf layout would take %d (%.0f %%)\n",
+              l.packing.sheets, l.sheet.name.c_str(), l.sheet.width, l.sheet.height,
+              100 * l.packing.utilisation, l.shelf.sheets, 100 * l.shelf.utilisation);
+  std::printf("labels     %zu patch ids, %d partner ids beside slots (%d without room)\n", l.patches.size(),
+              partners, missing);
+}
+
+// A bar on stderr while the stages run, when stderr is a terminal.
+class ProgressBar {
+ public:
+  explicit ProgressBar(bool show) : show_(show), start_(std::chrono::steady_clock::now()) {}
+  void operator()(const char* stage) {
+    if (!show_) return;
+    const int width = 24, done = width * stage_++ / kDesignStages;
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+    std::fprintf(stderr, "\r\033[K[%s%s] %d/%d %s (%.0f s)", std::string(done, '#').c_str(),
+                 std::string(width - done, '.').c_str(), stage_, kDesignStages, stage, seconds);
+  }
+  void clear() const {
+    if (show_) std::fprintf(stderr, "\r\033[K");
+  }
+
+ private:
+  bool show_;
+  int stage_ = 0;
+  std::chrono::steady_clock::time_point start_;
+};
+
+// The model at the asked size: longest side, or height along W (u x v), in mm.
+Model sized(Model model, const DesignOptions& o) {
+  if (o.height > 0) {
+    const Interval w = model.mesh.extent(normalized(cross(o.uDirection(), o.vDirection())));
+    const Vec3 box = model.bounds.size();
+    const double longest = std::max({box.x, box.y, box.z});
+    if (!(w.hi - w.lo > 0)) throw Error(ErrorKind::BadInput, "the model has no height to scale");
+    return scaledToSize(model, longest * o.height / (w.hi - w.lo));
+  }
+  return o.size > 0 ? scaledToSize(model, o.size) : model;
 }
 
 void runDesign(DesignOptions o) {
   if (!(o.foldAngle > 0 && o.foldAngle <= 90))
     throw Error(ErrorKind::BadParameter, "the fold angle must be in (0, 90] degrees");
-  Model model = readModel(o.model);
-  if (o.size > 0) model = scaledToSize(model, o.size);
+  const Model model = sized(readModel(o.model), o);
   ArrangementParams& p = o.params.arrangement;
   p.u = o.uDirection();
   p.v = o.vDirection();
@@ -76,11 +182,11 @@ void runDesign(DesignOptions o) {
                                          : Scheme::Both;
   o.params.slots.end = o.slotEnd == "round" ? SlotEnd::Round : SlotEnd::Square;
   o.params.slots.uUp = o.uSlots == "up";
-  const bool tty = ::isatty(2);
-  const Design d = runDesign(model, o.params, [tty](const char* stage) {
-    if (tty) std::fprintf(stderr, "\r\033[K%s ...", stage);
-  });
-  if (tty) std::fprintf(stderr, "\r\033[K");
+  o.params.sheet = sheetSpec(o.sheet, o.margin, o.spacing);
+  o.params.sheet.rotate = !o.noRotate;
+  ProgressBar bar(::isatty(2));
+  const Design d = runDesign(model, o.params, std::ref(bar));
+  bar.clear();
   const Arrangement& a = d.arrangement;
 
   int nu = 0, nv = 0, holding = 0;
@@ -101,6 +207,7 @@ void runDesign(DesignOptions o) {
   std::printf("quality    silhouette IoU U %.3f, V %.3f, W %.3f; volume IoU %.3f\n", a.quality.silhouetteIouU,
               a.quality.silhouetteIouV, a.quality.silhouetteIouW, a.quality.volumeIou);
   printRealization(d, o.params);
+  printLayout(d.layout);
   std::printf("time      ");
   double total = 0;
   for (const StageTime& t : d.timings) {
@@ -147,13 +254,28 @@ Run addDesignCommand(CLI::App& app) {
                          "Design a sliceform for the model: stable, slotted so it can be assembled, "
                          "with exact patches; summarise it and write it to a folder.");
   addModelOptions(cmd, *o);
+  cmd->footer(kManual);
   cmd->add_option("-o,--output", o->output,
-                  "folder to write report.json, timings.json, assembly.step and assembly.brep into "
-                  "(created if missing; files are replaced whole)");
-  cmd->add_option(
-         "--size", o->size,
-         "scale the model so its longest side is this many mm (0: keep its size; mesh files carry no unit)")
-      ->capture_default_str();
+                  "folder to write the sheets, the 3D assembly and report.json into (created if missing; "
+                  "files are replaced whole)");
+  CLI::Option* size =
+      cmd->add_option("--size", o->size,
+                      "scale the model so its longest side is this many mm (0: keep its size; mesh files "
+                      "carry no unit)")
+          ->capture_default_str();
+  cmd->add_option("--height", o->height, "scale the model so its height along W (u x v) is this many mm")
+      ->excludes(size);
+  cmd->add_option("--sheet", o->sheet, "sheet size: A4, A3, Letter, or WxH in mm (e.g. 600x400)")
+      ->capture_default_str()
+      ->group("Sheets");
+  cmd->add_option("--margin", o->margin, "mm kept clear along every sheet edge")
+      ->capture_default_str()
+      ->group("Sheets");
+  cmd->add_option("--spacing", o->spacing, "mm between patches on a sheet")
+      ->capture_default_str()
+      ->group("Sheets");
+  cmd->add_flag("--no-rotate", o->noRotate, "keep every patch upright on the sheet (grain, printed textures)")
+      ->group("Sheets");
   cmd->add_option("-n,--slices", o->params.arrangement.slices, "slices per direction")->capture_default_str();
   cmd->add_option("--interval", o->params.arrangement.interval, "slice interval in mm (overrides --slices)");
   cmd->add_option("--tau-a", o->params.arrangement.tauA,

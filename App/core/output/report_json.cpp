@@ -41,6 +41,10 @@ json outline(const Region2d& region) {
   return out;
 }
 
+json label(const Label& l) {
+  return {{"text", l.text}, {"at", {l.at.x, l.at.y}}, {"height_mm", l.height}, {"vertical", l.vertical}};
+}
+
 }  // namespace
 
 json reportJson(const Model& model, const DesignParams& params, const Design& d) {
@@ -76,17 +80,25 @@ json reportJson(const Model& model, const DesignParams& params, const Design& d)
     const ScaffoldPatch& sp = a.scaffold.patches[k];
     const PatchPlane plane = patchPlane(a, k);
     const PatchFace& face = d.patches[k];
-    patches.push_back({{"id", patchId(a.scaffold, k)},
-                       {"family", sp.family == Family::U ? "U" : "V"},
-                       {"cylinder", sp.cylinder},
-                       {"slice", sp.slice},
-                       {"origin", vec(plane.origin)},
-                       {"normal", vec(plane.normal)},
-                       {"x_axis", vec(plane.xAxis)},
-                       {"y_axis", vec(plane.yAxis)},
-                       {"area_mm2", face.outline.area()},
-                       {"exact", face.exact},
-                       {"outline", outline(face.outline)}});
+    const FlatPatch& flat = d.layout.patches[k];
+    const Placement& at = d.layout.packing.placements[k];
+    patches.push_back(
+        {{"id", patchId(a.scaffold, k)},
+         {"family", sp.family == Family::U ? "U" : "V"},
+         {"cylinder", sp.cylinder},
+         {"slice", sp.slice},
+         {"origin", vec(plane.origin)},
+         {"normal", vec(plane.normal)},
+         {"x_axis", vec(plane.xAxis)},
+         {"y_axis", vec(plane.yAxis)},
+         {"area_mm2", face.outline.area()},
+         {"exact", face.exact},
+         {"outline", outline(face.outline)},
+         {"sheet", at.sheet + 1},
+         {"placement", {{"x_mm", at.offset.x}, {"y_mm", at.offset.y}, {"rotation_deg", at.rotation}}},
+         {"label", label(flat.name)},
+         {"partner_labels", flat.partners.size()},
+         {"partner_labels_missing", flat.partnersMissing}});
   }
   doc["patches"] = patches;
   json hinges = json::array();
@@ -128,6 +140,16 @@ json reportJson(const Model& model, const DesignParams& params, const Design& d)
   for (const int k : r.assemblyOrder) order.push_back(patchId(a.scaffold, k));
   doc["assembly_order"] = order;
   doc["assembly_order_checked"] = r.assemblyChecked;
+  const SheetLayout& l = d.layout;
+  doc["sheets"] = {{"count", l.packing.sheets},
+                   {"name", l.sheet.name},
+                   {"size_mm", {l.sheet.width, l.sheet.height}},
+                   {"margin_mm", l.sheet.margin},
+                   {"spacing_mm", l.sheet.spacing},
+                   {"rotations", l.sheet.rotate},
+                   {"utilisation", l.packing.utilisation},
+                   {"shelf_count", l.shelf.sheets},
+                   {"shelf_utilisation", l.shelf.utilisation}};
   doc["cylinders"] = {{"u", a.uCylinders.size()},
                       {"v", a.vCylinders.size()},
                       {"uncovered_u", a.scaffold.uncoveredU},

@@ -44,6 +44,7 @@ Design runDesign(const Model& model, DesignParams params, const Progress& progre
       if (hinges[h].holds && d.realization.meets[h]) pins.push_back({hinges[h].u, hinges[h].v});
     return certify(bars, pins);
   });
+  d.layout = timed(d.timings, "layout", progress, [&] { return layOut(d, params.sheet); });
   return d;
 }
 

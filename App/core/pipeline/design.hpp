@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // The whole pipeline from a model to a design that can be cut: arrangement (§4),
 // realization (§5), exact patch faces, and a last check of what is emitted: interlocks and
-// split patches on the exact outlines, and the certificate on the hinges that are left. Each stage is
-// timed; `progress` hears of each stage as it starts.
+// split patches on the exact outlines, and the certificate on the hinges that are left; then
+// the layout: patches flattened, labelled and nested onto sheets. Each stage is timed;
+// `progress` hears of each stage as it starts (kDesignStages of them).
 #pragma once
 
 #include <functional>
@@ -10,6 +11,7 @@
 
 #include "arrangement/arrange.hpp"
 #include "exact/patch_faces.hpp"
+#include "layout/layout.hpp"
 #include "realization/realize.hpp"
 
 namespace sliceform {
@@ -17,6 +19,7 @@ namespace sliceform {
 struct DesignParams {
   ArrangementParams arrangement;
   SlotParams slots;
+  SheetSpec sheet;
 };
 
 struct Design {
@@ -25,10 +28,12 @@ struct Design {
   std::vector<PatchFace> patches;  // exact faces at the popped-up pose
   Emitted emitted;                 // interlocks and split patches of the emitted outlines
   Certificate certificate;         // again, on the hinges whose slotted patches still meet
+  SheetLayout layout;              // flat, labelled patches nested onto sheets
   std::vector<StageTime> timings;  // every stage, the arrangement's included
 };
 
 using Progress = std::function<void(const char* stage)>;
+constexpr int kDesignStages = 6;
 
 Design runDesign(const Model& model, DesignParams params, const Progress& progress = {});
 

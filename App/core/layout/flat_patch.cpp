@@ -1,0 +1,174 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+#include "layout/flat_patch.hpp"
+
+#include <BRepAdaptor_Curve.hxx>
+#include <BRepTools_WireExplorer.hxx>
+#include <GCPnts_QuasiUniformDeflection.hxx>
+#include <TopExp_Explorer.hxx>
+#include <TopoDS.hxx>
+#include <TopoDS_Edge.hxx>
+#include <TopoDS_Wire.hxx>
+
+#include <cmath>
+
+#include "layout/labels.hpp"
+#include "pipeline/design.hpp"
+#include "support/occt_guard.hpp"
+
+namespace sliceform {
+namespace {
+
+constexpr double kTwoPi = 2 * M_PI;
+
+double turn(Vec2 a, Vec2 b, Vec2 c) {  // (b - a) x (c - a): > 0 when a, b, c turn left
+  return (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
+}
+
+CutElement line(Vec2 a, Vec2 b) {
+  CutElement e;
+  e.a = a;
+  e.b = b;
+  return e;
+}
+
+struct PlaneMap {
+  Vec3 xAxis, yAxis;
+  Vec2 operator()(const gp_Pnt& p) const {
+    const Vec3 q{p.X(), p.Y(), p.Z()};
+    return {dot(q, xAxis), dot(q, yAxis)};
+  }
+};
+
+// One edge, walked in the wire's direction, as lines and arcs in the plane's coordinates.
+void addEdge(const TopoDS_Edge& edge, const PlaneMap& to2d, CutLoop& loop) {
+  const BRepAdaptor_Curve curve(edge);
+  const bool reversed = edge.Orientation() == TopAbs_REVERSED;
+  double first = curve.FirstParameter(), last = curve.LastParameter();
+  const Vec2 a = to2d(curve.Value(reversed ? last : first)), b = to2d(curve.Value(reversed ? first : last));
+  if (curve.GetType() == GeomAbs_Line) {
+    loop.push_back(line(a, b));
+    return;
+  }
+  if (curve.GetType() == GeomAbs_Circle) {
+    const gp_Circ circle = curve.Circle();
+    CutElement e = line(a, b);
+    e.kind = CutElement::Kind::Circle;
+    e.centre = to2d(circle.Location());
+    e.radius = circle.Radius();
+    if (last - first < kTwoPi - 1e-9) {
+      const Vec2 mid = to2d(curve.Value((first + last) / 2));
+      e.kind = CutElement::Kind::Arc;
+      e.start = std::atan2(a.y - e.centre.y, a.x - e.centre.x);
+      e.end = std::atan2(b.y - e.centre.y, b.x - e.centre.x);
+      // Three points met in order along a circle turn the way the circle is walked.
+      e.ccw = turn(a, mid, b) > 0;
+    }
+    loop.push_back(e);
+    return;
+  }
+  // Anything else (B-splines, ellipses) as a polyline within the output deflection.
+  GCPnts_QuasiUniformDeflection points(curve, kOutlineDeflection, first, last);
+  if (!points.IsDone() || points.NbPoints() < 2) {
+    loop.push_back(line(a, b));
+    return;
+  }
+  const int n = points.NbPoints();
+  for (int i = 1; i < n; ++i) {
+    const int p = reversed ? n + 1 - i : i, q = reversed ? n - i : i + 1;
+    loop.push_back(line(to2d(points.Value(p)), to2d(points.Value(q))));
+  }
+}
+
+std::vector<CutLoop> cutLoops(const TopoDS_Shape& shape, const PlaneMap& to2d) {
+  return occtGuard("flattening a patch", [&] {
+    std::vector<CutLoop> loops;
+    for (TopExp_Explorer w(shape, TopAbs_WIRE); w.More(); w.Next()) {
+      CutLoop loop;
+      for (BRepTools_WireExplorer e(TopoDS::Wire(w.Current())); e.More(); e.Next())
+        addEdge(e.Current(), to2d, loop);
+      if (!loop.empty()) loops.push_back(loop);
+    }
+    return loops;
+  });
+}
+
+// The partner of every hinge of `patch` that is still a hinge once slotted.
+std::vector<LabelSpot> partnerSpots(const Design& d, int patch) {
+  const Arrangement& a = d.arrangement;
+  const Realization& r = d.realization;
+  const bool isU = a.scaffold.patches[patch].family == Family::U;
+  const SliceFrame& f = isU ? a.u.frame : a.v.frame;
+  const SliceFrame& g = isU ? a.v.frame : a.u.frame;
+  std::vector<LabelSpot> spots;
+  for (size_t h = 0; h < a.scaffold.hinges.size(); ++h) {
+    const ScaffoldHinge& hinge = a.scaffold.hinges[h];
+    if ((isU ? hinge.u : hinge.v) != patch || !r.meets[h]) continue;
+    const int partner = isU ? hinge.v : hinge.u;
+    const Slot slot = isU ? uSlot(r.slots[h]) : vSlot(r.slots[h]);
+    const Interval& at = hinge.holds ? hinge.grip : hinge.w;
+    const double root = (at.lo + at.hi) / 2;
+    // Beside the slot's stretch of the hinge: above the root for an up slot, below for down.
+    const double y = slot == Slot::Up     ? (root + hinge.w.hi) / 2
+                     : slot == Slot::Down ? (hinge.w.lo + root) / 2
+                                          : root;
+    spots.push_back({patchId(a.scaffold, partner), lineX(f, g, a.scaffold.patches[partner].position), hinge.w,
+                     y, r.params.width()});
+  }
+  return spots;
+}
+
+}  // namespace
+
+Vec2 pointAt(const CutElement& e, double t) {
+  switch (e.kind) {
+    case CutElement::Kind::Line:
+      return {e.a.x + t * (e.b.x - e.a.x), e.a.y + t * (e.b.y - e.a.y)};
+    case CutElement::Kind::Circle: {
+      const double angle = t * kTwoPi;
+      return {e.centre.x + e.radius * std::cos(angle), e.centre.y + e.radius * std::sin(angle)};
+    }
+    case CutElement::Kind::Arc: {
+      double sweep = e.ccw ? e.end - e.start : e.start - e.end;
+      sweep = std::fmod(sweep + 2 * kTwoPi, kTwoPi);
+      const double angle = e.start + (e.ccw ? 1 : -1) * t * sweep;
+      return {e.centre.x + e.radius * std::cos(angle), e.centre.y + e.radius * std::sin(angle)};
+    }
+  }
+  return e.a;
+}
+
+std::vector<Vec2> sample(const CutElement& e, double deflection) {
+  if (e.kind == CutElement::Kind::Line) return {e.a};
+  // Chord error r (1 - cos(step / 2)) <= deflection.
+  const double step = 2 * std::acos(std::max(-1.0, 1 - deflection / std::max(e.radius, 1e-9)));
+  double sweep = kTwoPi;
+  if (e.kind == CutElement::Kind::Arc)
+    sweep = std::fmod((e.ccw ? e.end - e.start : e.start - e.end) + 2 * kTwoPi, kTwoPi);
+  const int n = std::max(2, static_cast<int>(std::ceil(sweep / step)));
+  std::vector<Vec2> points;
+  for (int i = 0; i < n; ++i) points.push_back(pointAt(e, static_cast<double>(i) / n));
+  return points;
+}
+
+std::vector<FlatPatch> flattenPatches(const Design& d) {
+  const Arrangement& a = d.arrangement;
+  std::vector<FlatPatch> out;
+  for (int k = 0; k < static_cast<int>(d.patches.size()); ++k) {
+    const PatchPlane plane = patchPlane(a, k);
+    FlatPatch flat;
+    flat.patch = k;
+    flat.id = patchId(a.scaffold, k);
+    flat.family = a.scaffold.patches[k].family;
+    flat.outline = d.patches[k].outline;
+    flat.cut = cutLoops(kerfCompensated(d.patches[k].shape, d.realization.params.kerf),
+                        PlaneMap{plane.xAxis, plane.yAxis});
+    flat.name = placeName(flat.outline, flat.id);
+    const double partnerHeight = std::max(flat.name.height * 0.6, 1.0);
+    flat.partners =
+        placePartners(flat.outline, partnerSpots(d, k), {flat.name}, partnerHeight, flat.partnersMissing);
+    out.push_back(std::move(flat));
+  }
+  return out;
+}
+
+}  // namespace sliceform

@@ -1,0 +1,63 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// A patch laid flat: its cut paths and engraving in the patch plane's own 2D coordinates
+// (x along the plane's x_axis, y along its y_axis, mm; the same coordinates as report.json's
+// outlines). Cut paths keep the exact faces' lines and circular arcs, so a DXF can carry
+// ARC and CIRCLE entities; other curves are sampled within kOutlineDeflection.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "exact/patch_faces.hpp"
+#include "frames/scaffold.hpp"
+#include "geometry/region2d.hpp"
+
+namespace sliceform {
+
+struct Design;
+
+// One piece of a cut loop, in the loop's direction: a segment from `a` to `b`, an arc
+// from angle `start` to `end` about `centre` (counter-clockwise when `ccw`, radians), or a
+// full circle.
+struct CutElement {
+  enum class Kind { Line, Arc, Circle } kind = Kind::Line;
+  Vec2 a, b;  // end points (for an arc too: a at `start`, b at `end`)
+  Vec2 centre;
+  double radius = 0, start = 0, end = 0;
+  bool ccw = true;
+};
+using CutLoop = std::vector<CutElement>;  // closed and connected, in order
+
+// An engraved polyline (labels).
+using Stroke = std::vector<Vec2>;
+
+// A label: text set in strokes, and the box it occupies (for the report and the tests).
+struct Label {
+  std::string text;
+  Vec2 at;                // centre of the text box
+  double height = 0;      // mm, cap height
+  bool vertical = false;  // rotated 90° (reads bottom to top)
+  std::vector<Stroke> strokes;
+};
+
+struct FlatPatch {
+  int patch = -1;
+  std::string id;  // "U3", "V7"
+  Family family = Family::U;
+  std::vector<CutLoop> cut;     // outer loops and holes (slots already cut), kerf applied
+  Region2d outline;             // the paper, polygonised (kOutlineDeflection)
+  Label name;                   // the patch id, well inside the patch
+  std::vector<Label> partners;  // the partner's id beside each slot
+  int partnersMissing = 0;      // slots with no room for a partner label
+};
+
+// Every patch of a design laid flat and labelled; `kerf` moves the cut paths as
+// SlotParams::kerf says (outline and labels stay the paper's).
+std::vector<FlatPatch> flattenPatches(const Design& design);
+
+// A point of a cut element at parameter t in [0, 1] (used for sampling and bounds).
+Vec2 pointAt(const CutElement& e, double t);
+// The element sampled within `deflection` mm, its first point included, its last not.
+std::vector<Vec2> sample(const CutElement& e, double deflection);
+
+}  // namespace sliceform

@@ -1,0 +1,38 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// Labels, engraved: the patch id well inside the patch and, at every hinge, the partner's id
+// beside the slot, as in the paper's figures. Text is set in a small single-stroke font, so
+// a laser engraves (or a plotter draws) one line per stroke and every output shows the
+// same marks; a label is placed only where its whole box, plus a margin, is paper.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "geometry/region2d.hpp"
+#include "layout/flat_patch.hpp"
+
+namespace sliceform {
+
+// The text as strokes, its box centred on `at`, cap height `height` mm.
+Label setLabel(const std::string& text, Vec2 at, double height, bool vertical);
+// Width of the text box at cap height `height`, mm.
+double labelWidth(const std::string& text, double height);
+
+// Where a hinge meets the patch, for its partner label.
+struct LabelSpot {
+  std::string text;  // the partner's id
+  double x = 0;      // the hinge line
+  Interval w;        // the hinge segment along it
+  double y = 0;      // preferred height: beside the slot
+  double slotWidth = 0;
+};
+
+// The patch id at the deepest spot that holds it (up to 8 mm high), horizontal if it fits
+// there, else upright; empty strokes when no box of 1 mm fits.
+Label placeName(const Region2d& paper, const std::string& id);
+// Partner labels beside each hinge, clear of each other and of `taken` labels; spots with
+// no room are left out and counted in `missing`.
+std::vector<Label> placePartners(const Region2d& paper, const std::vector<LabelSpot>& spots,
+                                 const std::vector<Label>& taken, double maxHeight, int& missing);
+
+}  // namespace sliceform

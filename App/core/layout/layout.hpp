@@ -1,0 +1,31 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// The layout stage: every patch flattened and labelled, then nested onto sheets. What the
+// sheet writers (PDF, SVG, PNG, DXF) and report.json read.
+#pragma once
+
+#include <vector>
+
+#include "layout/flat_patch.hpp"
+#include "layout/nesting.hpp"
+
+namespace sliceform {
+
+struct Design;
+
+struct SheetLayout {
+  SheetSpec sheet;
+  std::vector<FlatPatch> patches;  // in patch order
+  Packing packing;                 // libnest2d
+  Packing shelf;                   // the paper's shelf layout, for comparison only
+};
+
+SheetLayout layOut(const Design& design, const SheetSpec& sheet);
+
+// Everything drawn on one sheet, in sheet coordinates (mm, origin bottom-left, y up).
+struct SheetDrawing {
+  std::vector<CutLoop> cut;
+  std::vector<Stroke> engrave;
+};
+std::vector<SheetDrawing> sheetDrawings(const SheetLayout& layout);
+
+}  // namespace sliceform

@@ -1,0 +1,147 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+#include "layout/nesting.hpp"
+
+#include <libnest2d/libnest2d.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <regex>
+
+#include "support/error.hpp"
+
+namespace sliceform {
+namespace {
+
+// libnest2d works in Clipper integers; a micrometre is far finer than any cutter.
+constexpr double kUnits = 1000;
+
+ClipperLib::cInt units(double mm) {
+  return static_cast<ClipperLib::cInt>(std::llround(mm * kUnits));
+}
+
+// What libnest2d nests for a patch: the convex hull of its paper, as one clockwise, closed
+// contour. Decision (docs/decisions.md): libnest2d 5.0 computes no-fit polygons for convex
+// shapes only; given a non-convex one it places parts over each other (an L-shape test put
+// them 23 mm apart where they are 60 mm wide). Hulls are always correct; what they waste
+// inside concave patches is the price.
+ClipperLib::Path nestingContour(const Region2d& outline) {
+  ClipperLib::Path points;
+  for (const Region2d::Loop& loop : outline.loops())
+    if (Region2d::signedArea(loop) > 0)
+      for (const Vec2& p : loop) points.push_back({units(p.x), units(p.y)});
+  ClipperLib::Path path = libnest2d::shapelike::convexHull(points);
+  if (!path.empty() && path.front() == path.back()) path.pop_back();
+  if (ClipperLib::Orientation(path)) ClipperLib::ReversePath(path);
+  path.push_back(path.front());
+  return path;
+}
+
+double paperArea(const std::vector<Region2d>& outlines) {
+  double area = 0;
+  for (const Region2d& r : outlines) area += r.area();
+  return area;
+}
+
+void checkFits(const Box2& b, const std::string& name, const SheetSpec& s) {
+  const double w = b.max.x - b.min.x, h = b.max.y - b.min.y;
+  const double W = s.width - 2 * s.margin, H = s.height - 2 * s.margin;
+  const bool fits = (w <= W && h <= H) || (s.rotate && h <= W && w <= H);
+  if (!fits) {
+    char text[256];
+    std::snprintf(text, sizeof text,
+                  "patch %s is %.1f x %.1f mm and does not fit a %s sheet (%.0f x %.0f mm inside %.0f mm "
+                  "margins): choose a larger --sheet or a smaller --size",
+                  name.c_str(), w, h, s.name.c_str(), W, H, s.margin);
+    throw Error(ErrorKind::BadParameter, text);
+  }
+}
+
+}  // namespace
+
+SheetSpec sheetSpec(const std::string& name, double margin, double spacing) {
+  SheetSpec s;
+  s.name = name;
+  s.margin = margin;
+  s.spacing = spacing;
+  std::smatch m;
+  if (name == "A4") {
+    s.width = 210, s.height = 297;
+  } else if (name == "A3") {
+    s.width = 297, s.height = 420;
+  } else if (name == "Letter") {
+    s.width = 215.9, s.height = 279.4;
+  } else if (std::regex_match(name, m, std::regex(R"(([0-9.]+)x([0-9.]+))"))) {
+    s.width = std::stod(m[1]), s.height = std::stod(m[2]);
+  } else {
+    throw Error(ErrorKind::BadParameter, "unknown sheet '" + name + "': use A4, A3, Letter or WxH in mm");
+  }
+  if (!(margin >= 0) || !(spacing >= 0))
+    throw Error(ErrorKind::BadParameter, "the sheet margin and spacing must not be negative");
+  if (!(s.width > 2 * margin && s.height > 2 * margin))
+    throw Error(ErrorKind::BadParameter, "the sheet " + name + " leaves no room inside its margins");
+  return s;
+}
+
+Vec2 Placement::apply(Vec2 p) const {
+  const double r = rotation * M_PI / 180, c = std::cos(r), s = std::sin(r);
+  return {c * p.x - s * p.y + offset.x, s * p.x + c * p.y + offset.y};
+}
+
+Packing nestOnSheets(const std::vector<Region2d>& outlines, const std::vector<std::string>& names,
+                     const SheetSpec& sheet) {
+  using namespace libnest2d;
+  std::vector<Item> items;
+  for (size_t i = 0; i < outlines.size(); ++i) {
+    checkFits(outlines[i].bounds(), names[i], sheet);
+    items.emplace_back(nestingContour(outlines[i]), ClipperLib::Paths{});
+  }
+  NestConfig<NfpPlacer, FirstFitSelection> config;
+  config.placer_config.rotations = {0.0};
+  if (sheet.rotate) config.placer_config.rotations = {0.0, Pi / 2, Pi, 3 * Pi / 2};
+  config.placer_config.alignment = NfpPlacer::Config::Alignment::BOTTOM_LEFT;
+  config.placer_config.starting_point = NfpPlacer::Config::Alignment::BOTTOM_LEFT;
+  // One thread: the result must not depend on which thread finishes first.
+  config.placer_config.parallel = false;
+  // libnest2d grows every item by half the spacing, the bin too: widen the bin by as much
+  // so the paper keeps exactly `margin` from the sheet's edges.
+  const double edge = sheet.margin - sheet.spacing / 2;
+  const Box bin({units(edge), units(edge)}, {units(sheet.width - edge), units(sheet.height - edge)});
+  const size_t bins = nest(items, bin, units(sheet.spacing), config);
+
+  Packing packing;
+  packing.sheets = static_cast<int>(bins);
+  for (const Item& item : items) {
+    if (item.binId() < 0) throw Error(ErrorKind::Geometry, "libnest2d left a patch off every sheet");
+    const auto t = item.translation();
+    const double degrees = std::round(static_cast<double>(item.rotation()) * 180 / Pi);
+    packing.placements.push_back({item.binId(), {t.X / kUnits, t.Y / kUnits}, std::fmod(degrees + 360, 360)});
+  }
+  packing.utilisation = paperArea(outlines) / (packing.sheets * sheet.width * sheet.height);
+  return packing;
+}
+
+Packing shelfPack(const std::vector<Region2d>& outlines, const std::vector<std::string>& names,
+                  const SheetSpec& sheet) {
+  // Left to right in rows from the top, as in the paper's figures; a new row when the
+  // sheet is full across, a new sheet when it is full down. No rotation.
+  Packing packing;
+  packing.sheets = outlines.empty() ? 0 : 1;
+  double x = sheet.margin, top = sheet.height - sheet.margin, rowHeight = 0;
+  for (size_t i = 0; i < outlines.size(); ++i) {
+    const Box2 b = outlines[i].bounds();
+    checkFits(b, names[i], {sheet.name, sheet.width, sheet.height, sheet.margin, sheet.spacing, false});
+    const double w = b.max.x - b.min.x, h = b.max.y - b.min.y;
+    if (x + w > sheet.width - sheet.margin) x = sheet.margin, top -= rowHeight + sheet.spacing, rowHeight = 0;
+    if (top - h < sheet.margin)
+      ++packing.sheets, x = sheet.margin, top = sheet.height - sheet.margin, rowHeight = 0;
+    packing.placements.push_back({packing.sheets - 1, {x - b.min.x, top - h - b.min.y}, 0});
+    x += w + sheet.spacing;
+    rowHeight = std::max(rowHeight, h);
+  }
+  packing.utilisation =
+      packing.sheets ? paperArea(outlines) / (packing.sheets * sheet.width * sheet.height) : 0;
+  return packing;
+}
+
+}  // namespace sliceform
