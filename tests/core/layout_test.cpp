@@ -1,0 +1,211 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// The layout stage: flat cut loops that close and keep arcs, labels on paper and clear of
+// each other, nesting that never overlaps patches or leaves a sheet, and the same layout
+// from run to run.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+#include <regex>
+#include <sstream>
+
+#include "layout/labels.hpp"
+#include "layout/layout.hpp"
+#include "output/sheets_cairo.hpp"
+#include "pipeline/design.hpp"
+#include "support/error.hpp"
+#include "test_support.hpp"
+
+namespace sliceform {
+namespace {
+
+Design designOf(const TopoDS_Shape& shape, const SheetSpec& sheet = {}) {
+  DesignParams params;
+  params.arrangement.slices = 32;
+  params.sheet = sheet;
+  return runDesign(modelFromShape(shape, "test solid"), params);
+}
+
+const Design& sphere() {
+  static const Design d = designOf(test::makeSphere(60));
+  return d;
+}
+
+Region2d box(const Label& l) {
+  const double w = labelWidth(l.text, l.height) / 2, h = l.height / 2;
+  const double hx = l.vertical ? h : w, hy = l.vertical ? w : h;
+  return Region2d::fromLoops({{{l.at.x - hx, l.at.y - hy},
+                               {l.at.x + hx, l.at.y - hy},
+                               {l.at.x + hx, l.at.y + hy},
+                               {l.at.x - hx, l.at.y + hy}}});
+}
+
+double distance(Vec2 a, Vec2 b) {
+  return std::hypot(a.x - b.x, a.y - b.y);
+}
+
+Region2d placed(const Region2d& r, const Placement& p) {
+  std::vector<Region2d::Loop> loops;
+  for (const Region2d::Loop& loop : r.loops()) {
+    Region2d::Loop moved;
+    for (const Vec2& q : loop) moved.push_back(p.apply(q));
+    loops.push_back(moved);
+  }
+  return Region2d::fromLoops(loops);
+}
+
+TEST(Labels, StrokesStayInTheirBox) {
+  for (const bool vertical : {false, true}) {
+    const Label l = setLabel("V12", {10, 20}, 4, vertical);
+    ASSERT_EQ(l.strokes.size(), 1u + 2u + 1u);  // V, 1 (two strokes), 2
+    const Box2 b = box(l).bounds();
+    Box2 ink;
+    for (const Stroke& s : l.strokes)
+      for (const Vec2& p : s) {
+        ink.min = {std::min(ink.empty ? p.x : ink.min.x, p.x), std::min(ink.empty ? p.y : ink.min.y, p.y)};
+        ink.max = {std::max(ink.empty ? p.x : ink.max.x, p.x), std::max(ink.empty ? p.y : ink.max.y, p.y)};
+        ink.empty = false;
+      }
+    // The ink fills the box exactly: the box is what placement keeps on paper.
+    EXPECT_NEAR(ink.min.x, b.min.x, 1e-4);
+    EXPECT_NEAR(ink.min.y, b.min.y, 1e-4);
+    EXPECT_NEAR(ink.max.x, b.max.x, 1e-4);
+    EXPECT_NEAR(ink.max.y, b.max.y, 1e-4);
+  }
+  EXPECT_NEAR(labelWidth("U3", 6), 9.5, 1e-9);  // two glyphs of 4 and a gap of 1.5 units
+}
+
+TEST(Layout, CutLoopsCloseKeepArcsAndBoundThePaper) {
+  const Design& d = sphere();
+  int arcs = 0;
+  for (const FlatPatch& p : d.layout.patches) {
+    double area = 0;
+    for (const CutLoop& loop : p.cut) {
+      for (size_t i = 0; i < loop.size(); ++i) {
+        const CutElement& e = loop[i];
+        arcs += e.kind == CutElement::Kind::Arc ? 1 : 0;
+        if (e.kind == CutElement::Kind::Arc) {
+          EXPECT_NEAR(distance(pointAt(e, 0), e.a), 0, 1e-6) << p.id;
+          EXPECT_NEAR(distance(pointAt(e, 1), e.b), 0, 1e-6) << p.id;
+        }
+        if (e.kind != CutElement::Kind::Circle)
+          EXPECT_NEAR(distance(e.b, loop[(i + 1) % loop.size()].a), 0, 1e-6)
+              << p.id << " loop does not close";
+      }
+      Region2d::Loop points;
+      for (const CutElement& e : loop)
+        for (const Vec2& q : sample(e, 0.005)) points.push_back(q);
+      area += Region2d::signedArea(points);
+    }
+    // Loops run either way round; the outer one dominates, the holes and slots subtract.
+    EXPECT_NEAR(std::fabs(area), p.outline.area(), 0.01 * p.outline.area()) << p.id;
+  }
+  EXPECT_GT(arcs, static_cast<int>(d.layout.patches.size()));  // a sphere's patches are arcs and slots
+}
+
+TEST(Layout, LabelsSitOnPaperAndClearOfEachOther) {
+  const Design& d = sphere();
+  int partners = 0;
+  for (const FlatPatch& p : d.layout.patches) {
+    ASSERT_GT(p.name.height, 0) << p.id;
+    EXPECT_EQ(p.name.text, p.id);
+    std::vector<Label> all = {p.name};
+    all.insert(all.end(), p.partners.begin(), p.partners.end());
+    for (size_t i = 0; i < all.size(); ++i) {
+      EXPECT_LT(box(all[i]).subtract(p.outline).area(), 1e-9)
+          << p.id << ": label " << all[i].text << " off the paper";
+      for (size_t j = 0; j < i; ++j)
+        EXPECT_LT(box(all[i]).intersect(box(all[j])).area(), 1e-9)
+            << p.id << ": " << all[i].text << " on " << all[j].text;
+    }
+    partners += static_cast<int>(p.partners.size()) + p.partnersMissing;
+  }
+  // One partner label per hinge end that is still a hinge: every hinge labels both patches.
+  int meeting = 0;
+  for (const bool m : d.realization.meets) meeting += m ? 1 : 0;
+  EXPECT_EQ(partners, 2 * meeting);
+}
+
+void expectNoOverlaps(const SheetLayout& l) {
+  ASSERT_EQ(l.packing.placements.size(), l.patches.size());
+  std::vector<Region2d> onSheet;
+  for (size_t k = 0; k < l.patches.size(); ++k) {
+    const Placement& at = l.packing.placements[k];
+    ASSERT_GE(at.sheet, 0);
+    ASSERT_LT(at.sheet, l.packing.sheets);
+    onSheet.push_back(placed(l.patches[k].outline, at));
+    const Box2 b = onSheet.back().bounds();
+    EXPECT_GE(b.min.x, l.sheet.margin - 1e-3) << l.patches[k].id;
+    EXPECT_GE(b.min.y, l.sheet.margin - 1e-3) << l.patches[k].id;
+    EXPECT_LE(b.max.x, l.sheet.width - l.sheet.margin + 1e-3) << l.patches[k].id;
+    EXPECT_LE(b.max.y, l.sheet.height - l.sheet.margin + 1e-3) << l.patches[k].id;
+  }
+  for (size_t a = 0; a < onSheet.size(); ++a)
+    for (size_t b = 0; b < a; ++b)
+      if (l.packing.placements[a].sheet == l.packing.placements[b].sheet)
+        // Apart by the spacing, less what the micrometre placement grid may take.
+        EXPECT_TRUE(onSheet[a].offset(l.sheet.spacing / 2 - 0.01).intersect(onSheet[b]).empty())
+            << l.patches[a].id << " and " << l.patches[b].id << " closer than the spacing";
+}
+
+TEST(Layout, NestedPatchesNeverOverlapAndStayOnTheSheet) {
+  expectNoOverlaps(sphere().layout);
+}
+
+TEST(Layout, SmallSheetsTakeMoreOfThemAndStillNoOverlap) {
+  // The sphere on 130 x 130 mm cards: several sheets, rotations in use.
+  const SheetLayout l = layOut(sphere(), sheetSpec("130x130", 4, 2));
+  EXPECT_GT(l.packing.sheets, sphere().layout.packing.sheets);
+  expectNoOverlaps(l);
+  EXPECT_LE(l.packing.sheets, l.shelf.sheets);
+}
+
+TEST(Layout, SameInputSameLayout) {
+  const SheetLayout again = layOut(sphere(), sphere().layout.sheet);
+  const SheetLayout &a = sphere().layout, &b = again;
+  ASSERT_EQ(a.packing.placements.size(), b.packing.placements.size());
+  for (size_t k = 0; k < a.packing.placements.size(); ++k) {
+    EXPECT_EQ(a.packing.placements[k].sheet, b.packing.placements[k].sheet);
+    EXPECT_EQ(a.packing.placements[k].offset.x, b.packing.placements[k].offset.x);
+    EXPECT_EQ(a.packing.placements[k].offset.y, b.packing.placements[k].offset.y);
+    EXPECT_EQ(a.packing.placements[k].rotation, b.packing.placements[k].rotation);
+    EXPECT_EQ(a.patches[k].name.at.x, b.patches[k].name.at.x);
+  }
+}
+
+TEST(Layout, PatchLargerThanTheSheetIsAClearError) {
+  try {
+    layOut(sphere(), sheetSpec("100x100", 10, 3));
+    FAIL() << "a 120 mm sphere's patches were laid out on 80 mm of sheet";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.kind(), ErrorKind::BadParameter);
+    EXPECT_NE(std::string(e.what()).find("does not fit a 100x100 sheet"), std::string::npos) << e.what();
+  }
+}
+
+TEST(Layout, SheetNames) {
+  EXPECT_EQ(sheetSpec("A3", 10, 3).height, 420);
+  EXPECT_NEAR(sheetSpec("Letter", 10, 3).width, 215.9, 1e-9);
+  const SheetSpec custom = sheetSpec("600x400", 5, 2);
+  EXPECT_EQ(custom.width, 600);
+  EXPECT_EQ(custom.height, 400);
+  EXPECT_THROW(sheetSpec("B5", 10, 3), Error);
+  EXPECT_THROW(sheetSpec("A4", 120, 3), Error);  // no room inside the margins
+  EXPECT_THROW(sheetSpec("A4", 10, -1), Error);
+}
+
+TEST(SheetSvg, SizeAndViewBoxAreMillimetres) {
+  const Design& d = sphere();
+  test::TempDir dir;
+  const std::string path = dir.file("sheet.svg");
+  writeSheetSvg(sheetDrawings(d.layout).front(), d.layout.sheet, path);
+  std::ifstream in(path);
+  std::stringstream text;
+  text << in.rdbuf();
+  EXPECT_TRUE(
+      std::regex_search(text.str(), std::regex(R"(width="210mm" height="297mm" viewBox="0 0 210 297")")))
+      << text.str().substr(0, 300);
+}
+
+}  // namespace
+}  // namespace sliceform
