@@ -1,0 +1,291 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+#include "output/assembly_png.hpp"
+
+#include <cairo.h>
+#include <gp_Dir.hxx>
+#include <gp_Pnt.hxx>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <memory>
+
+#include "assembly/fold.hpp"
+#include "support/atomic_file.hpp"
+#include "support/error.hpp"
+
+namespace sliceform {
+namespace {
+
+// From the front right and a little above, like an isometric view but less steep, so the
+// slots along W stay visible.
+constexpr double kAzimuth = 35 * M_PI / 180;    // from the front (-V) towards the right (+U)
+constexpr double kElevation = 25 * M_PI / 180;  // above the U-V plane
+constexpr int kSupersample = 2;                 // drawn 2x2 larger, then averaged: cheap anti-aliasing
+constexpr double kMargin = 0.04;                // of the width, on every side
+constexpr double kMaxAspect = 1.5;              // height / width at most
+constexpr double kFade = 0.3;                   // how much paler the farthest paper is: depth cue
+constexpr float kEdge = 0.22f;                  // grey of the edge lines
+
+using Rgb = std::array<float, 3>;
+
+// Screen axes and the direction towards the viewer, orthonormal, in model coordinates.
+struct View {
+  Vec3 right, up, toViewer;
+};
+
+// W = U x V from a U panel and a V panel. A V-patch folded by theta has normal
+// cos(90° - theta) V - sin(90° - theta) U, so U x that is still along +W.
+Vec3 modelUp(const std::vector<Panel3>& panels) {
+  const Panel3* u = nullptr;
+  const Panel3* v = nullptr;
+  for (const Panel3& p : panels) {
+    if (p.family == 0 && !u) u = &p;
+    if (p.family != 0 && !v) v = &p;
+  }
+  if (u && v) {
+    const Vec3 w = cross(u->normal, v->normal);
+    if (norm(w) > 1e-6) return normalized(w);
+  }
+  return {0, 0, 1};
+}
+
+View makeView(const std::vector<Panel3>& panels) {
+  const Vec3 up = modelUp(panels);
+  // Front and right: the U normal made perpendicular to up is "right"; any other if none.
+  Vec3 right{1, 0, 0};
+  for (const Panel3& p : panels)
+    if (p.family == 0) {
+      right = p.normal;  // every U panel has the same
+      break;
+    }
+  right = right - up * dot(right, up);
+  if (norm(right) < 1e-6)
+    right = std::fabs(up.x) < 0.9 ? Vec3{1, 0, 0} - up * up.x : Vec3{0, 1, 0} - up * up.y;
+  right = normalized(right);
+  const Vec3 front = cross(right, up);  // U x W = -V: where a viewer in front stands, as in CAD
+  const Vec3 toViewer = (front * std::cos(kAzimuth) + right * std::sin(kAzimuth)) * std::cos(kElevation) +
+                        up * std::sin(kElevation);
+  const Vec3 screenRight = normalized(cross(up, toViewer));
+  return {screenRight, cross(toViewer, screenRight), toViewer};
+}
+
+// Model to (supersampled) pixel coordinates: x right, y down, depth growing towards the viewer.
+struct Placement {
+  View view;
+  double x0 = 0, y1 = 0, scale = 1, offsetX = 0, offsetY = 0;
+  int width = 0, height = 0;  // supersampled
+  double nearest = 0, farthest = 0;
+
+  Vec3 project(const Vec3& p) const {
+    return {offsetX + (dot(p, view.right) - x0) * scale, offsetY + (y1 - dot(p, view.up)) * scale,
+            dot(p, view.toViewer)};
+  }
+};
+
+Placement place(const std::vector<Panel3>& panels, int widthPixels) {
+  Placement pl;
+  pl.view = makeView(panels);
+  Box3 box;  // in view coordinates
+  for (const Panel3& panel : panels)
+    for (const auto& loop : panel.loops)
+      for (const Vec3& p : loop)
+        box.add({dot(p, pl.view.right), dot(p, pl.view.up), dot(p, pl.view.toViewer)});
+  if (box.empty()) throw Error(ErrorKind::BadParameter, "the assembly picture has nothing to draw");
+  const double w = widthPixels, margin = kMargin * w;
+  const Vec3 size = box.size();
+  double scale = (w - 2 * margin) / std::max(size.x, 1e-9);
+  double h = size.y * scale + 2 * margin;
+  if (h > kMaxAspect * w) {
+    h = kMaxAspect * w;
+    scale = (h - 2 * margin) / std::max(size.y, 1e-9);
+  }
+  pl.width = widthPixels * kSupersample;
+  pl.height = std::max(1, static_cast<int>(std::ceil(h))) * kSupersample;
+  pl.scale = scale * kSupersample;
+  pl.x0 = box.min.x;
+  pl.y1 = box.max.y;
+  pl.offsetX = (pl.width - size.x * pl.scale) / 2;
+  pl.offsetY = (pl.height - size.y * pl.scale) / 2;
+  pl.nearest = box.max.z;
+  pl.farthest = box.min.z;
+  return pl;
+}
+
+// The supersampled picture: colour and depth per pixel.
+struct Raster {
+  int width, height;
+  std::vector<Rgb> colour;
+  std::vector<float> depth;
+  Raster(int w, int h)
+      : width(w), height(h), colour(size_t(w) * h, Rgb{1, 1, 1}), depth(size_t(w) * h, -HUGE_VALF) {}
+};
+
+// Lambert with |n.l|: paper is seen from both sides. Mostly ambient, so both colours stay
+// soft; the light comes from the viewer, a little from above and the left.
+float shade(const Vec3& normal, const View& view) {
+  const Vec3 light = normalized(view.toViewer + view.up * 0.3 - view.right * 0.2);
+  return static_cast<float>(0.7 + 0.3 * std::fabs(dot(normalized(normal), light)));
+}
+
+// Scanline fill with the even-odd rule (so holes and slots stay open), depth from the plane.
+void fillPanel(Raster& r, const Placement& pl, const Panel3& panel) {
+  const Vec3 n = normalized(panel.normal);
+  const double facing = dot(n, pl.view.toViewer);
+  if (std::fabs(facing) < 1e-6 || panel.loops.empty() || panel.loops[0].empty()) return;  // edge-on
+  // Plane n.P = c; a pixel's depth follows from its screen position.
+  const double c = dot(n, panel.loops[0][0]);
+  const double nx = dot(n, pl.view.right), ny = dot(n, pl.view.up);
+  auto depthAt = [&](double px, double py) {
+    const double sx = pl.x0 + (px - pl.offsetX) / pl.scale, sy = pl.y1 - (py - pl.offsetY) / pl.scale;
+    return (c - nx * sx - ny * sy) / facing;
+  };
+  std::vector<std::vector<Vec3>> loops;
+  double top = HUGE_VAL, bottom = -HUGE_VAL;
+  for (const auto& loop : panel.loops) {
+    loops.emplace_back();
+    for (const Vec3& p : loop) {
+      loops.back().push_back(pl.project(p));
+      top = std::min(top, loops.back().back().y);
+      bottom = std::max(bottom, loops.back().back().y);
+    }
+  }
+  // Pixel rows whose centre y + 0.5 lies in [top, bottom).
+  const int row0 = std::max(0, static_cast<int>(std::ceil(top - 0.5)));
+  const int row1 = std::min(r.height, static_cast<int>(std::ceil(bottom - 0.5)));
+  if (row0 >= row1) return;
+  std::vector<std::vector<double>> crossings(row1 - row0);
+  for (const auto& loop : loops)
+    for (size_t i = 0; i < loop.size(); ++i) {
+      const Vec3& a = loop[i];
+      const Vec3& b = loop[(i + 1) % loop.size()];
+      if (a.y == b.y) continue;
+      const double lo = std::min(a.y, b.y), hi = std::max(a.y, b.y);
+      for (int row = std::max(row0, static_cast<int>(std::ceil(lo - 0.5)));
+           row < std::min(row1, static_cast<int>(std::ceil(hi - 0.5))); ++row)
+        crossings[row - row0].push_back(a.x + (row + 0.5 - a.y) * (b.x - a.x) / (b.y - a.y));
+    }
+  const float tone = shade(n, pl.view);
+  const PaperColour paper = paperColour(panel.family);
+  for (int row = row0; row < row1; ++row) {
+    std::vector<double>& xs = crossings[row - row0];
+    std::sort(xs.begin(), xs.end());
+    for (size_t i = 0; i + 1 < xs.size(); i += 2) {
+      const int col0 = std::max(0, static_cast<int>(std::ceil(xs[i] - 0.5)));
+      const int col1 = std::min(r.width, static_cast<int>(std::ceil(xs[i + 1] - 0.5)));
+      for (int col = col0; col < col1; ++col) {
+        const double z = depthAt(col + 0.5, row + 0.5);
+        const size_t at = size_t(row) * r.width + col;
+        if (z <= r.depth[at]) continue;
+        r.depth[at] = static_cast<float>(z);
+        const float fade =
+            static_cast<float>(kFade * (pl.nearest - z) / std::max(pl.nearest - pl.farthest, 1e-9));
+        r.colour[at] = {tone * float(paper.r) * (1 - fade) + fade, tone * float(paper.g) * (1 - fade) + fade,
+                        tone * float(paper.b) * (1 - fade) + fade};
+      }
+    }
+  }
+}
+
+// The outlines as dark lines, hidden where other paper is in front: a line passes the depth
+// test with a small bias, so it shows on its own panel.
+void drawEdges(Raster& r, const Placement& pl, const Panel3& panel, int thickness, double bias) {
+  auto stamp = [&](double x, double y, double z) {
+    const int cx = static_cast<int>(std::floor(x - thickness / 2.0 + 0.5));
+    const int cy = static_cast<int>(std::floor(y - thickness / 2.0 + 0.5));
+    for (int row = std::max(0, cy); row < std::min(r.height, cy + thickness); ++row)
+      for (int col = std::max(0, cx); col < std::min(r.width, cx + thickness); ++col) {
+        const size_t at = size_t(row) * r.width + col;
+        if (z + bias >= r.depth[at]) r.colour[at] = {kEdge, kEdge, kEdge};
+      }
+  };
+  for (const auto& loop : panel.loops)
+    for (size_t i = 0; i < loop.size(); ++i) {
+      const Vec3 a = pl.project(loop[i]), b = pl.project(loop[(i + 1) % loop.size()]);
+      const int steps = std::max(1, static_cast<int>(std::ceil(2 * std::hypot(b.x - a.x, b.y - a.y))));
+      for (int s = 0; s <= steps; ++s) {
+        const double t = static_cast<double>(s) / steps;
+        stamp(a.x + t * (b.x - a.x), a.y + t * (b.y - a.y), a.z + t * (b.z - a.z));
+      }
+    }
+}
+
+using Surface = std::unique_ptr<cairo_surface_t, decltype(&cairo_surface_destroy)>;
+
+// Averages each kSupersample x kSupersample block into one opaque pixel.
+Surface downsample(const Raster& r) {
+  const int w = r.width / kSupersample, h = r.height / kSupersample;
+  Surface surface(cairo_image_surface_create(CAIRO_FORMAT_RGB24, w, h), cairo_surface_destroy);
+  if (cairo_surface_status(surface.get()) != CAIRO_STATUS_SUCCESS)
+    throw Error(ErrorKind::Io, "cannot make a " + std::to_string(w) + " x " + std::to_string(h) + " picture");
+  cairo_surface_flush(surface.get());
+  unsigned char* data = cairo_image_surface_get_data(surface.get());
+  const int stride = cairo_image_surface_get_stride(surface.get());
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      Rgb sum{0, 0, 0};
+      for (int dy = 0; dy < kSupersample; ++dy)
+        for (int dx = 0; dx < kSupersample; ++dx)
+          for (int k = 0; k < 3; ++k)
+            sum[k] += r.colour[size_t(y * kSupersample + dy) * r.width + x * kSupersample + dx][k];
+      uint32_t pixel = 0;
+      for (int k = 0; k < 3; ++k) {
+        const float v = std::clamp(sum[k] / (kSupersample * kSupersample), 0.0f, 1.0f);
+        pixel = pixel << 8 | static_cast<uint32_t>(std::lround(v * 255));
+      }
+      reinterpret_cast<uint32_t*>(data + size_t(y) * stride)[x] = pixel;  // RGB24: 0x00RRGGBB
+    }
+  cairo_surface_mark_dirty(surface.get());
+  return surface;
+}
+
+}  // namespace
+
+PaperColour paperColour(int family) {
+  // A warm cream and a soft blue: tell the families apart, and still look like paper.
+  return family == 0 ? PaperColour{0.98, 0.89, 0.72} : PaperColour{0.71, 0.82, 0.96};
+}
+
+std::vector<Panel3> assemblyPanels(const Arrangement& a, const std::vector<PatchFace>& patches,
+                                   double thetaDegrees) {
+  std::vector<Panel3> panels;
+  for (size_t k = 0; k < patches.size(); ++k) {
+    if (patches[k].outline.empty()) continue;
+    // The same pose as assemble(): the patch plane at the popped-up pose, then the fold.
+    const PatchPlane plane = patchPlane(a, static_cast<int>(k));
+    const gp_Trsf pose = foldTransform(a, static_cast<int>(k), thetaDegrees);
+    Panel3 panel;
+    panel.family = a.scaffold.patches[k].family == Family::U ? 0 : 1;
+    const gp_Dir n = gp_Dir(plane.normal.x, plane.normal.y, plane.normal.z).Transformed(pose);
+    panel.normal = {n.X(), n.Y(), n.Z()};
+    for (const Region2d::Loop& loop : patches[k].outline.loops()) {
+      panel.loops.emplace_back();
+      for (const Vec2& p : loop) {
+        const Vec3 q = plane.origin + plane.xAxis * p.x + plane.yAxis * p.y;
+        const gp_Pnt moved = gp_Pnt(q.x, q.y, q.z).Transformed(pose);
+        panel.loops.back().push_back({moved.X(), moved.Y(), moved.Z()});
+      }
+    }
+    panels.push_back(std::move(panel));
+  }
+  return panels;
+}
+
+void writeAssemblyPng(const std::vector<Panel3>& panels, const std::string& path, int widthPixels) {
+  if (widthPixels < 16 || widthPixels > 16384)
+    throw Error(ErrorKind::BadParameter, "the assembly picture must be 16 to 16384 pixels wide");
+  const Placement pl = place(panels, widthPixels);
+  Raster raster(pl.width, pl.height);
+  for (const Panel3& panel : panels) fillPanel(raster, pl, panel);
+  // About one output pixel wide, a little more in large pictures.
+  const int thickness = kSupersample * std::max(1, static_cast<int>(std::lround(widthPixels / 1000.0)));
+  const double bias = 2e-3 * std::max(pl.nearest - pl.farthest, 1e-9) + thickness / pl.scale;
+  for (const Panel3& panel : panels) drawEdges(raster, pl, panel, thickness, bias);
+  const Surface surface = downsample(raster);
+  writeAtomically(path, [&](const std::string& temporary) {
+    if (cairo_surface_write_to_png(surface.get(), temporary.c_str()) != CAIRO_STATUS_SUCCESS)
+      throw Error(ErrorKind::Io, "cannot write " + path);
+  });
+}
+
+}  // namespace sliceform

@@ -1,0 +1,40 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// A picture of the assembled sliceform, drawn in software (no OpenGL, no display) so the
+// CLI and the tests can make it anywhere: an orthographic view from the front right and a
+// little above, panels z-buffered and shaded two-sided in two paper colours, with dark edges
+// so the slotted lattice reads clearly. Written as PNG with cairo.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "arrangement/arrange.hpp"
+#include "exact/patch_faces.hpp"
+#include "geometry/vec.hpp"
+
+namespace sliceform {
+
+// One patch in 3D at the fold pose.
+struct Panel3 {
+  std::vector<std::vector<Vec3>> loops;  // outer loops and holes (even-odd), mm
+  Vec3 normal;                           // the patch plane's normal; panels are two-sided
+  int family = 0;                        // 0 = U, 1 = V: two paper colours
+};
+
+// The patches' outlines at fold angle theta (degrees, in (0, 90]), at the same poses as
+// assemble(); patches without an outline are left out.
+std::vector<Panel3> assemblyPanels(const Arrangement& a, const std::vector<PatchFace>& patches,
+                                   double thetaDegrees);
+
+// Written atomically. The view's up is W, found as (U normal) x (V normal) from the panels
+// (+z if the panels are all of one family); the picture is widthPixels wide and as high as
+// the model needs (at most 1.5 times the width). Throws Io or BadParameter.
+void writeAssemblyPng(const std::vector<Panel3>& panels, const std::string& path, int widthPixels = 1200);
+
+// The paper colour of a family (0 = U, 1 = V), RGB in [0, 1]; the glTF uses the same two.
+struct PaperColour {
+  double r, g, b;
+};
+PaperColour paperColour(int family);
+
+}  // namespace sliceform

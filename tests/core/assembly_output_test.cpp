@@ -1,0 +1,219 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// The 3D outputs of the assembled sliceform: the binary glTF (header, metres, Y up, bounds,
+// two-sided colours) and the software-rendered picture (size, paper colours, same poses as
+// the exact assembly).
+#include <gtest/gtest.h>
+
+#include <cairo.h>
+#include <BRepBndLib.hxx>
+#include <Bnd_Box.hxx>
+#include <nlohmann/json.hpp>
+
+#include <cstdint>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <set>
+
+#include "arrangement/arrange.hpp"
+#include "assembly/fold.hpp"
+#include "exact/patch_faces.hpp"
+#include "output/assembly_png.hpp"
+#include "output/gltf.hpp"
+#include "realization/realize.hpp"
+#include "support/error.hpp"
+#include "test_support.hpp"
+
+namespace sliceform {
+namespace {
+
+struct Design {
+  Arrangement arrangement;
+  std::vector<PatchFace> faces;
+};
+
+// A torus: both families, and patches with holes (the even-odd fill must keep them open). Its
+// triangulation rather than the exact solid: the polygon path is 25 times faster.
+const Design& torus() {
+  static const Design d = [] {
+    const Model model = modelFromMesh(modelFromShape(test::makeTorus(60, 20), "torus").mesh, "torus mesh");
+    ArrangementParams params;
+    params.slices = 24;
+    params.hinges.slotWidth = SlotParams{}.width();
+    Design out;
+    out.arrangement = arrange(model, params);
+    const Realization r = realize(realizationInput(out.arrangement, model.meshDeflection), SlotParams{});
+    out.faces = exactPatches(model, out.arrangement, r);
+    return out;
+  }();
+  return d;
+}
+
+std::string readAll(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+uint32_t le32(const std::string& bytes, size_t at) {
+  uint32_t v;
+  std::memcpy(&v, bytes.data() + at, 4);
+  return v;  // the test machines are little-endian, like the format
+}
+
+// The exact bounds of a shape in mm.
+Bnd_Box bounds(const TopoDS_Shape& shape) {
+  Bnd_Box box;
+  BRepBndLib::AddOptimal(shape, box, /*useTriangulation=*/false, /*useShapeTolerance=*/false);
+  return box;
+}
+
+TEST(AssemblyOutput, GlbIsInMetresWithYUpAndTheAssemblysBounds) {
+  const Design& d = torus();
+  const TopoDS_Shape all = assemble(d.arrangement, d.faces, 40);
+  const std::vector<int> families = assemblyFamilies(d.arrangement, d.faces);
+  test::TempDir dir;
+  const std::string path = dir.file("torus.glb");
+  writeGltf(all, path, families);
+
+  // The 12-byte header and the JSON chunk (glTF 2.0, "Binary glTF Layout").
+  const std::string bytes = readAll(path);
+  ASSERT_GT(bytes.size(), 20u);
+  EXPECT_EQ(bytes.substr(0, 4), "glTF");
+  EXPECT_EQ(le32(bytes, 4), 2u);
+  EXPECT_EQ(le32(bytes, 8), bytes.size());
+  const uint32_t jsonLength = le32(bytes, 12);
+  ASSERT_EQ(le32(bytes, 16), 0x4E4F534Au);  // "JSON"
+  ASSERT_LE(20 + jsonLength + 8, bytes.size());
+  EXPECT_EQ(le32(bytes, 20 + jsonLength + 4), 0x004E4942u);  // then "BIN\0"
+  const nlohmann::json gltf = nlohmann::json::parse(bytes.substr(20, jsonLength));
+
+  // One mesh per patch; no node moves anything, so the accessors' bounds are the model's.
+  ASSERT_TRUE(gltf.contains("meshes"));
+  EXPECT_EQ(gltf["meshes"].size(), families.size());
+  for (const auto& node : gltf["nodes"]) {
+    EXPECT_FALSE(node.contains("matrix") || node.contains("translation") || node.contains("rotation") ||
+                 node.contains("scale"));
+  }
+  double lo[3] = {HUGE_VAL, HUGE_VAL, HUGE_VAL}, hi[3] = {-HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
+  for (const auto& mesh : gltf["meshes"])
+    for (const auto& primitive : mesh["primitives"]) {
+      const auto& accessor = gltf["accessors"][primitive["attributes"]["POSITION"].get<int>()];
+      for (int k = 0; k < 3; ++k) {
+        lo[k] = std::min(lo[k], accessor["min"][k].get<double>());
+        hi[k] = std::max(hi[k], accessor["max"][k].get<double>());
+      }
+    }
+  // Our (x, y, z) in mm is glTF's (x, z, -y) in metres.
+  double x0, y0, z0, x1, y1, z1;
+  bounds(all).Get(x0, y0, z0, x1, y1, z1);
+  const double wantLo[3] = {x0 / 1000, z0 / 1000, -y1 / 1000}, wantHi[3] = {x1 / 1000, z1 / 1000, -y0 / 1000};
+  for (int k = 0; k < 3; ++k) {
+    EXPECT_NEAR(lo[k], wantLo[k], 1e-4) << "axis " << k;
+    EXPECT_NEAR(hi[k], wantHi[k], 1e-4) << "axis " << k;
+  }
+
+  // Paper is seen from both sides and is not metal (glTF's default metallicFactor is 1); the
+  // two families have two colours.
+  std::set<std::vector<double>> colours;
+  ASSERT_TRUE(gltf.contains("materials"));
+  for (const auto& material : gltf["materials"]) {
+    EXPECT_TRUE(material.value("doubleSided", false));
+    const auto& pbr = material["pbrMetallicRoughness"];
+    EXPECT_EQ(pbr.value("metallicFactor", 1.0), 0.0);
+    colours.insert(pbr["baseColorFactor"].get<std::vector<double>>());
+  }
+  EXPECT_EQ(colours.size(), 2u);
+  // Nothing is left beside the file: no temporary .glb, no side .bin.
+  EXPECT_EQ(std::distance(std::filesystem::directory_iterator(dir.file("")), {}), 1);
+}
+
+TEST(AssemblyOutput, GltfErrorsAreIoErrors) {
+  const Design& d = torus();
+  test::TempDir dir;
+  try {
+    writeGltf(assemble(d.arrangement, d.faces, 90), dir.file("missing/folder/a.glb"));
+    FAIL() << "no error";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.kind(), ErrorKind::Io);
+    // The message names the file the user asked for, not a temporary one.
+    EXPECT_NE(std::string(e.what()).find("folder/a.glb:"), std::string::npos) << e.what();
+    EXPECT_EQ(std::string(e.what()).find("a.glb.tmp"), std::string::npos) << e.what();
+  }
+}
+
+// The panels are where assemble() puts the exact faces, folded or not.
+TEST(AssemblyOutput, PanelsHaveTheAssemblysPoses) {
+  const Design& d = torus();
+  for (double theta : {90.0, 25.0}) {
+    const std::vector<Panel3> panels = assemblyPanels(d.arrangement, d.faces, theta);
+    ASSERT_EQ(panels.size(), assemblyFamilies(d.arrangement, d.faces).size());
+    Box3 box;
+    double offPlane = 0;  // every point lies on its panel's plane, whose normal is given
+    for (const Panel3& p : panels)
+      for (const auto& loop : p.loops)
+        for (const Vec3& q : loop) {
+          box.add(q);
+          offPlane = std::max(offPlane, std::fabs(dot(q - p.loops[0][0], p.normal)));
+        }
+    EXPECT_LT(offPlane, 1e-9) << theta;
+    double x0, y0, z0, x1, y1, z1;
+    bounds(assemble(d.arrangement, d.faces, theta)).Get(x0, y0, z0, x1, y1, z1);
+    const double tolerance = 2 * kOutlineDeflection + 1e-3;
+    EXPECT_NEAR(box.min.x, x0, tolerance) << theta;
+    EXPECT_NEAR(box.min.y, y0, tolerance) << theta;
+    EXPECT_NEAR(box.min.z, z0, tolerance) << theta;
+    EXPECT_NEAR(box.max.x, x1, tolerance) << theta;
+    EXPECT_NEAR(box.max.y, y1, tolerance) << theta;
+    EXPECT_NEAR(box.max.z, z1, tolerance) << theta;
+  }
+}
+
+TEST(AssemblyOutput, PictureShowsBothPaperColours) {
+  const Design& d = torus();
+  test::TempDir dir;
+  const std::string path = dir.file("torus.png");
+  writeAssemblyPng(assemblyPanels(d.arrangement, d.faces, 60), path, 400);
+
+  cairo_surface_t* image = cairo_image_surface_create_from_png(path.c_str());
+  ASSERT_EQ(cairo_surface_status(image), CAIRO_STATUS_SUCCESS);
+  const int w = cairo_image_surface_get_width(image), h = cairo_image_surface_get_height(image);
+  EXPECT_EQ(w, 400);
+  EXPECT_GT(h, 100);
+  EXPECT_LE(h, 600);
+  const unsigned char* data = cairo_image_surface_get_data(image);
+  const int stride = cairo_image_surface_get_stride(image);
+  int paper = 0, warm = 0, cool = 0, dark = 0;
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      const uint32_t p = reinterpret_cast<const uint32_t*>(data + y * stride)[x];
+      const int r = p >> 16 & 255, g = p >> 8 & 255, b = p & 255;
+      if (r + g + b < 3 * 100) ++dark;
+      if (r == 255 && g == 255 && b == 255) continue;
+      ++paper;
+      if (r > b + 25) ++warm;  // the U paper, cream
+      if (b > r + 25) ++cool;  // the V paper, blue
+    }
+  cairo_surface_destroy(image);
+  const double pixels = static_cast<double>(w) * h;
+  EXPECT_GT(paper / pixels, 0.15);
+  EXPECT_GT(warm / pixels, 0.03);
+  EXPECT_GT(cool / pixels, 0.03);
+  EXPECT_GT(dark / pixels, 0.005) << "edge lines";
+}
+
+TEST(AssemblyOutput, PictureRejectsNothingToDrawAndBadFolders) {
+  test::TempDir dir;
+  EXPECT_THROW(writeAssemblyPng({}, dir.file("a.png")), Error);
+  EXPECT_FALSE(std::filesystem::exists(dir.file("a.png")));
+  const Design& d = torus();
+  try {
+    writeAssemblyPng(assemblyPanels(d.arrangement, d.faces, 90), dir.file("missing/a.png"), 200);
+    FAIL() << "no error";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.kind(), ErrorKind::Io);
+  }
+}
+
+}  // namespace
+}  // namespace sliceform
