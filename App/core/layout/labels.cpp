@@ -43,6 +43,26 @@ using ClipperLib::IntPoint;
 using ClipperLib::Path;
 using ClipperLib::Paths;
 
+// Labels need no micrometres: erosions here round their corners to 0.02 mm (Region2d's
+// own offset keeps 1 µm, which makes every round corner hundreds of vertices).
+constexpr double kLabelTolerance = 0.02;  // mm
+
+Region2d erode(const Region2d& region, double mm) {
+  ClipperLib::ClipperOffset offsetter;
+  offsetter.ArcTolerance = kLabelTolerance * Region2d::kUnitsPerMm;
+  offsetter.AddPaths(region.paths(), ClipperLib::jtRound, ClipperLib::etClosedPolygon);
+  Paths out;
+  offsetter.Execute(out, -mm * Region2d::kUnitsPerMm);
+  return Region2d::fromPaths(out, FillRule::NonZero);
+}
+
+// The paper with vertices closer than the tolerance merged: fewer, longer edges to sweep.
+Region2d simplified(const Region2d& paper) {
+  Paths paths = paper.paths();
+  ClipperLib::CleanPolygons(paths, kLabelTolerance * Region2d::kUnitsPerMm);
+  return Region2d::fromPaths(paths, FillRule::NonZero);
+}
+
 Region2d rect(Vec2 centre, double halfW, double halfH) {
   return Region2d::fromLoops({{{centre.x - halfW, centre.y - halfH},
                                {centre.x + halfW, centre.y - halfH},
@@ -58,6 +78,7 @@ Region2d erodeByBox(const Region2d& region, double halfW, double halfH) {
   const Path box = {{-w, -h}, {w, -h}, {w, h}, {-w, h}};
   Paths sweep;
   for (Path loop : region.paths()) {
+    if (loop.empty()) continue;
     loop.push_back(loop.front());  // swept as a closed polyline, its inside left alone
     Paths band;
     ClipperLib::MinkowskiSum(box, loop, band, false);
@@ -83,7 +104,7 @@ Vec2 deepestPoint(const Region2d& region) {
   Region2d core = region;
   for (int i = 0; i < 12; ++i) {
     const double mid = (lo + hi) / 2;
-    const Region2d eroded = region.offset(-mid);
+    const Region2d eroded = erode(region, mid);
     if (eroded.empty()) {
       hi = mid;
     } else {
@@ -92,12 +113,14 @@ Vec2 deepestPoint(const Region2d& region) {
     }
   }
   // The centroid of the largest remaining piece, if it is inside it; else a vertex.
+  // A sliver can erode to paths with no area and so no components: then the box centre.
   std::vector<Region2d> pieces = core.components();
+  if (pieces.empty()) return {(b.min.x + b.max.x) / 2, (b.min.y + b.max.y) / 2};
   const Region2d& best = *std::max_element(
       pieces.begin(), pieces.end(), [](const Region2d& a, const Region2d& c) { return a.area() < c.area(); });
   const Box2 bb = best.bounds();
   const Vec2 centre{(bb.min.x + bb.max.x) / 2, (bb.min.y + bb.max.y) / 2};
-  if (contains(best, centre)) return centre;
+  if (contains(best, centre) || best.loops().empty() || best.loops().front().empty()) return centre;
   return best.loops().front().front();
 }
 
@@ -135,7 +158,7 @@ Region2d freeFor(const Region2d& paper, const std::vector<Label>& taken, Vec2 ha
     near = paper.intersect(rect({(w.min.x + w.max.x) / 2, (w.min.y + w.max.y) / 2},
                                 (w.max.x - w.min.x) / 2 + grow.x, (w.max.y - w.min.y) / 2 + grow.y));
   }
-  Region2d room = erodeByBox(near.offset(-kEdgeMargin), half.x, half.y);
+  Region2d room = erodeByBox(erode(near, kEdgeMargin), half.x, half.y);
   if (window) room = room.intersect(*window);
   for (const Label& l : taken) {
     const Vec2 other = halfSize(l.text, l.height, l.vertical);
@@ -169,17 +192,21 @@ Label setLabel(const std::string& text, Vec2 at, double height, bool vertical) {
   return label;
 }
 
-Label placeName(const Region2d& paper, const std::string& id) {
+Label placeName(const Region2d& paperIn, const std::string& id) {
+  const Region2d paper = simplified(paperIn);
   for (const double height : {8.0, 6.0, 5.0, 4.0, 3.0, 2.5, 2.0, 1.6, 1.3, 1.0})
     for (const bool vertical : {false, true}) {
+      // No box fits where a disc as wide as the box's short side does not: a cheap test first.
+      if (erode(paper, kEdgeMargin + height / 2).empty()) continue;
       const Region2d room = freeFor(paper, {}, halfSize(id, height, vertical), nullptr);
       if (!room.empty()) return setLabel(id, deepestPoint(room), height, vertical);
     }
   return Label{id, {}, 0, false, {}};
 }
 
-std::vector<Label> placePartners(const Region2d& paper, const std::vector<LabelSpot>& spots,
+std::vector<Label> placePartners(const Region2d& paperIn, const std::vector<LabelSpot>& spots,
                                  const std::vector<Label>& taken, double maxHeight, int& missing) {
+  const Region2d paper = simplified(paperIn);
   std::vector<Label> placed, all = taken;
   for (const LabelSpot& s : spots) {
     bool done = false;

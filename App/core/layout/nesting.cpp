@@ -32,6 +32,7 @@ ClipperLib::Path nestingContour(const Region2d& outline) {
       for (const Vec2& p : loop) points.push_back({units(p.x), units(p.y)});
   ClipperLib::Path path = libnest2d::shapelike::convexHull(points);
   if (!path.empty() && path.front() == path.back()) path.pop_back();
+  if (path.size() < 3) throw Error(ErrorKind::Geometry, "a flattened patch has no area to nest");
   if (ClipperLib::Orientation(path)) ClipperLib::ReversePath(path);
   path.push_back(path.front());
   return path;
