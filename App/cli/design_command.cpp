@@ -17,7 +17,10 @@
 
 #include "assembly/fold.hpp"
 #include "cli/commands.hpp"
+#include "output/assembly_png.hpp"
+#include "output/gltf.hpp"
 #include "output/report_json.hpp"
+#include "output/sheet_dxf.hpp"
 #include "output/sheets_cairo.hpp"
 #include "pipeline/design.hpp"
 #include "support/error.hpp"
@@ -114,15 +117,19 @@ void writeOutputs(const Model& model, const DesignParams& params, const Design& 
   const std::vector<SheetDrawing> sheets = sheetDrawings(d.layout);
   writeSheetsPdf(sheets, d.layout.sheet, (dir / "sheets.pdf").string());
   writeSheetsPng(sheets, d.layout.sheet, (dir / "sheets.png").string());
-  for (size_t k = 0; k < sheets.size(); ++k)
+  for (size_t k = 0; k < sheets.size(); ++k) {
     writeSheetSvg(sheets[k], d.layout.sheet, (dir / sheetFile(k, ".svg")).string());
+    writeSheetDxf(sheets[k], d.layout.sheet, (dir / sheetFile(k, ".dxf")).string());
+  }
   removeStaleSheets(dir, static_cast<int>(sheets.size()));
   const TopoDS_Shape assembly = assemble(d.arrangement, d.patches, o.foldAngle);
   writeShape(assembly, (dir / "assembly.step").string());
   writeShape(assembly, (dir / "assembly.brep").string());
+  writeGltf(assembly, (dir / "assembly.glb").string(), assemblyFamilies(d.arrangement, d.patches));
+  writeAssemblyPng(assemblyPanels(d.arrangement, d.patches, o.foldAngle), (dir / "assembly.png").string());
   std::printf(
-      "wrote      %s: report.json, timings.json, sheets.pdf, sheets.png, sheet-1..%zu.svg; "
-      "assembly.step and assembly.brep at %g degrees\n",
+      "wrote      %s: report.json, timings.json, sheets.pdf, sheets.png, sheet-1..%zu.svg and .dxf; "
+      "assembly.step, .brep, .glb and .png at %g degrees\n",
       o.output.c_str(), sheets.size(), o.foldAngle);
 }
 

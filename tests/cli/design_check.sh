@@ -8,7 +8,8 @@ sliceform=$1 model=$2 checker=$3
 out=$(mktemp -d)
 trap 'rm -rf "$out"' EXIT
 "$sliceform" design "$model" -o "$out"
-for f in report.json timings.json assembly.step assembly.brep; do
+for f in report.json timings.json sheets.pdf sheets.png sheet-1.svg sheet-1.dxf \
+  assembly.step assembly.brep assembly.glb assembly.png; do
   test -s "$out/$f" || { echo "missing $f"; exit 1; }
 done
 /usr/bin/python3 "$checker" "$out/report.json"

@@ -75,6 +75,18 @@ TEST(Labels, StrokesStayInTheirBox) {
   EXPECT_NEAR(labelWidth("U3", 6), 9.5, 1e-9);  // two glyphs of 4 and a gap of 1.5 units
 }
 
+// A small island of paper lies wholly inside a big label's box, so no edge of the box
+// crosses its boundary: the label must still not be set there (the bunny's U19 once was).
+TEST(Labels, NameNeverOnAnIslandSmallerThanItsBox) {
+  auto square = [](double x, double y, double side) {
+    return Region2d::Loop{{x, y}, {x + side, y}, {x + side, y + side}, {x, y + side}};
+  };
+  const Region2d paper = Region2d::fromLoops({square(0, 0, 9.5), square(30, 0, 3)});
+  const Label l = placeName(paper, "U19");
+  ASSERT_GT(l.height, 0);
+  EXPECT_TRUE(box(l).subtract(paper).empty()) << "at " << l.at.x << ", " << l.at.y << " height " << l.height;
+}
+
 TEST(Layout, CutLoopsCloseKeepArcsAndBoundThePaper) {
   const Design& d = sphere();
   int arcs = 0;

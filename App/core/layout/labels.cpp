@@ -71,7 +71,9 @@ Region2d rect(Vec2 centre, double halfW, double halfH) {
 }
 
 // Where the centre of a halfW x halfH box can go so the box stays in `region`: the region
-// minus the band its boundary sweeps with the box (an exact Minkowski erosion).
+// minus the band its boundary sweeps with the box (an exact Minkowski erosion). The sweep
+// only catches boxes that some boundary crosses; a loop lying wholly inside the box (a
+// small island or hole) is caught by the box around one of its vertices.
 Region2d erodeByBox(const Region2d& region, double halfW, double halfH) {
   if (region.empty()) return {};
   const cInt w = Region2d::toUnits(halfW), h = Region2d::toUnits(halfH);
@@ -83,6 +85,9 @@ Region2d erodeByBox(const Region2d& region, double halfW, double halfH) {
     Paths band;
     ClipperLib::MinkowskiSum(box, loop, band, false);
     sweep.insert(sweep.end(), band.begin(), band.end());
+    Path around = box;
+    for (IntPoint& q : around) q = {q.X + loop.front().X, q.Y + loop.front().Y};
+    sweep.push_back(around);
   }
   return region.subtract(Region2d::fromPaths(sweep, FillRule::NonZero));
 }
