@@ -127,10 +127,11 @@ void writeOutputs(const Model& model, const DesignParams& params, const Design& 
   writeShape(assembly, (dir / "assembly.brep").string());
   writeGltf(assembly, (dir / "assembly.glb").string(), assemblyFamilies(d.arrangement, d.patches));
   writeAssemblyPng(assemblyPanels(d.arrangement, d.patches, o.foldAngle), (dir / "assembly.png").string());
+  const std::string sheetNames = sheets.size() == 1 ? "sheet-1" : "sheet-1.." + std::to_string(sheets.size());
   std::printf(
-      "wrote      %s: report.json, timings.json, sheets.pdf, sheets.png, sheet-1..%zu.svg and .dxf; "
+      "wrote      %s: report.json, timings.json, sheets.pdf, sheets.png, %s.svg and .dxf; "
       "assembly.step, .brep, .glb and .png at %g degrees\n",
-      o.output.c_str(), sheets.size(), o.foldAngle);
+      o.output.c_str(), sheetNames.c_str(), o.foldAngle);
 }
 
 void printLayout(const SheetLayout& l) {

@@ -87,6 +87,36 @@ TEST(Labels, NameNeverOnAnIslandSmallerThanItsBox) {
   EXPECT_TRUE(box(l).subtract(paper).empty()) << "at " << l.at.x << ", " << l.at.y << " height " << l.height;
 }
 
+// Text on a sheet reads left to right (or bottom to top) whichever way nesting turned its
+// patch: the "U" of "U1" comes before the "1".
+TEST(Labels, ReadUprightOnTheSheetWhateverThePatchRotation) {
+  for (const double rotation : {0.0, 90.0, 180.0, 270.0}) {
+    SheetLayout layout;
+    FlatPatch patch;
+    patch.name = setLabel("U1", {5, 2}, 4, false);
+    layout.patches.push_back(patch);
+    layout.packing.sheets = 1;
+    layout.packing.placements.push_back(Placement{0, {100, 100}, rotation});
+    const std::vector<SheetDrawing> sheets = sheetDrawings(layout);
+    ASSERT_EQ(sheets.size(), 1u);
+    ASSERT_EQ(sheets[0].engrave.size(), 3u);  // U, then 1 in two strokes
+    auto centre = [](const Stroke& s) {
+      Vec2 c{0, 0};
+      for (const Vec2& p : s) c = {c.x + p.x / s.size(), c.y + p.y / s.size()};
+      return c;
+    };
+    const Vec2 u = centre(sheets[0].engrave[0]), one = centre(sheets[0].engrave[2]);
+    const bool quarter = rotation == 90 || rotation == 270;
+    if (quarter) {
+      EXPECT_LT(u.y, one.y - 1) << rotation;  // vertical, read bottom to top
+      EXPECT_NEAR(u.x, one.x, 2) << rotation;  // both within the 4 mm line
+    } else {
+      EXPECT_LT(u.x, one.x - 1) << rotation;
+      EXPECT_NEAR(u.y, one.y, 2) << rotation;
+    }
+  }
+}
+
 TEST(Layout, CutLoopsCloseKeepArcsAndBoundThePaper) {
   const Design& d = sphere();
   int arcs = 0;

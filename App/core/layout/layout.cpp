@@ -3,6 +3,7 @@
 
 #include <cmath>
 
+#include "layout/labels.hpp"
 #include "pipeline/design.hpp"
 
 namespace sliceform {
@@ -18,10 +19,18 @@ CutElement placed(CutElement e, const Placement& p) {
   return e;
 }
 
-Stroke placed(const Stroke& s, const Placement& p) {
-  Stroke out;
-  for (const Vec2& q : s) out.push_back(p.apply(q));
-  return out;
+std::vector<const Label*> labelsOf(const FlatPatch& patch) {
+  std::vector<const Label*> labels{&patch.name};
+  for (const Label& l : patch.partners) labels.push_back(&l);
+  return labels;
+}
+
+// A label set again at its placed centre so it reads upright on the sheet: a patch turned
+// half round would otherwise show "V3" as "EΛ". Placements turn by quarters, so the label's
+// box is the same box, a quarter turn swapping horizontal and vertical.
+Label upright(const Label& l, const Placement& at) {
+  const bool quarter = std::lround(at.rotation / 90) % 2 != 0;
+  return setLabel(l.text, at.apply(l.at), l.height, l.vertical != quarter);
 }
 
 }  // namespace
@@ -52,9 +61,8 @@ std::vector<SheetDrawing> sheetDrawings(const SheetLayout& layout) {
       for (const CutElement& e : loop) moved.push_back(placed(e, at));
       sheet.cut.push_back(moved);
     }
-    for (const Stroke& s : patch.name.strokes) sheet.engrave.push_back(placed(s, at));
-    for (const Label& l : patch.partners)
-      for (const Stroke& s : l.strokes) sheet.engrave.push_back(placed(s, at));
+    for (const Label* l : labelsOf(patch))
+      for (const Stroke& s : upright(*l, at).strokes) sheet.engrave.push_back(s);
   }
   return sheets;
 }
