@@ -108,7 +108,7 @@ TEST(Labels, ReadUprightOnTheSheetWhateverThePatchRotation) {
     const Vec2 u = centre(sheets[0].engrave[0]), one = centre(sheets[0].engrave[2]);
     const bool quarter = rotation == 90 || rotation == 270;
     if (quarter) {
-      EXPECT_LT(u.y, one.y - 1) << rotation;  // vertical, read bottom to top
+      EXPECT_LT(u.y, one.y - 1) << rotation;   // vertical, read bottom to top
       EXPECT_NEAR(u.x, one.x, 2) << rotation;  // both within the 4 mm line
     } else {
       EXPECT_LT(u.x, one.x - 1) << rotation;
