@@ -15,13 +15,8 @@
 
 #include <unistd.h>
 
-#include "assembly/fold.hpp"
 #include "cli/commands.hpp"
-#include "output/assembly_png.hpp"
-#include "output/gltf.hpp"
-#include "output/report_json.hpp"
-#include "output/sheet_dxf.hpp"
-#include "output/sheets_cairo.hpp"
+#include "output/design_files.hpp"
 #include "pipeline/design.hpp"
 #include "support/error.hpp"
 
@@ -93,41 +88,13 @@ void printRealization(const Design& d, const DesignParams& params) {
   std::printf("\n");
 }
 
-std::string sheetFile(int sheet, const char* extension) {
-  return "sheet-" + std::to_string(sheet + 1) + extension;
-}
-
-// Sheet files of an earlier, longer run would be cut by mistake: remove those beyond this
-// run's count (only names this command writes), and say so.
-void removeStaleSheets(const std::filesystem::path& dir, int sheets) {
-  for (const char* extension : {".svg", ".dxf"})
-    for (int k = sheets;; ++k) {
-      const std::filesystem::path stale = dir / sheetFile(k, extension);
-      if (!std::filesystem::is_regular_file(stale)) break;
-      std::filesystem::remove(stale);
-      std::printf("removed    %s, left by an earlier run with more sheets\n", stale.string().c_str());
-    }
-}
-
 void writeOutputs(const Model& model, const DesignParams& params, const Design& d, const DesignOptions& o) {
-  std::filesystem::create_directories(o.output);
-  const std::filesystem::path dir(o.output);
-  writeJson(reportJson(model, params, d), (dir / "report.json").string());
-  writeJson(timingsJson(d), (dir / "timings.json").string());
-  const std::vector<SheetDrawing> sheets = sheetDrawings(d.layout);
-  writeSheetsPdf(sheets, d.layout.sheet, (dir / "sheets.pdf").string());
-  writeSheetsPng(sheets, d.layout.sheet, (dir / "sheets.png").string());
-  for (size_t k = 0; k < sheets.size(); ++k) {
-    writeSheetSvg(sheets[k], d.layout.sheet, (dir / sheetFile(k, ".svg")).string());
-    writeSheetDxf(sheets[k], d.layout.sheet, (dir / sheetFile(k, ".dxf")).string());
-  }
-  removeStaleSheets(dir, static_cast<int>(sheets.size()));
-  const TopoDS_Shape assembly = assemble(d.arrangement, d.patches, o.foldAngle);
-  writeShape(assembly, (dir / "assembly.step").string());
-  writeShape(assembly, (dir / "assembly.brep").string());
-  writeGltf(assembly, (dir / "assembly.glb").string(), assemblyFamilies(d.arrangement, d.patches));
-  writeAssemblyPng(assemblyPanels(d.arrangement, d.patches, o.foldAngle), (dir / "assembly.png").string());
-  const std::string sheetNames = sheets.size() == 1 ? "sheet-1" : "sheet-1.." + std::to_string(sheets.size());
+  const DesignFiles files = writeDesignFiles(model, params, d, o.output, o.foldAngle);
+  for (const std::string& name : files.removed)
+    std::printf("removed    %s/%s, left by an earlier run with more sheets\n", o.output.c_str(),
+                name.c_str());
+  const int sheets = d.layout.packing.sheets;
+  const std::string sheetNames = sheets == 1 ? "sheet-1" : "sheet-1.." + std::to_string(sheets);
   std::printf(
       "wrote      %s: report.json, timings.json, sheets.pdf, sheets.png, %s.svg and .dxf; "
       "assembly.step, .brep, .glb and .png at %g degrees\n",
