@@ -4,15 +4,13 @@
 // results come back as plain dicts and lists, so the FreeCAD side needs no C++ types.
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
-#include <BRepTools.hxx>
-#include <BRep_Builder.hxx>
-#include <TopExp_Explorer.hxx>
 
 #include <array>
 #include <sstream>
 #include <string>
 #include <vector>
 
+#include "bindings/convert.hpp"
 #include "model/model.hpp"
 #include "slicing/brep_slicer.hpp"
 #include "slicing/mesh_slicer.hpp"
@@ -22,44 +20,11 @@
 namespace py = pybind11;
 using namespace sliceform;
 
+namespace sliceform {
+void bindDesign(py::module_& m);
+}
+
 namespace {
-
-using Triple = std::array<double, 3>;
-using Index3 = std::array<uint32_t, 3>;
-
-Vec3 toVec(const Triple& t) {
-  return {t[0], t[1], t[2]};
-}
-py::tuple toTuple(const Vec3& v) {
-  return py::make_tuple(v.x, v.y, v.z);
-}
-
-TopoDS_Shape shapeFromBrep(const std::string& brep) {
-  if (brep.empty()) throw Error(ErrorKind::BadInput, "the BREP string is empty");
-  return occtGuard("reading the BREP string", [&] {
-    std::istringstream in(brep);
-    TopoDS_Shape shape;
-    BRep_Builder builder;
-    BRepTools::Read(shape, in, builder);
-    if (shape.IsNull()) throw Error(ErrorKind::BadInput, "the BREP string holds no shape");
-    return shape;
-  });
-}
-
-std::string brepFromShape(const TopoDS_Shape& shape) {
-  if (shape.IsNull()) return {};
-  std::ostringstream out;
-  BRepTools::Write(shape, out);
-  return out.str();
-}
-
-Mesh meshFromLists(const std::vector<Triple>& points, const std::vector<Index3>& triangles) {
-  Mesh mesh;
-  mesh.vertices.reserve(points.size());
-  for (const Triple& p : points) mesh.vertices.push_back(toVec(p));
-  mesh.triangles.assign(triangles.begin(), triangles.end());
-  return mesh;
-}
 
 SliceFrame frameFor(const Triple& normal, const Triple& up) {
   return makeSliceFrame(toVec(normal), toVec(up));
@@ -163,7 +128,7 @@ std::string brepRoundTrip(const std::string& brep) {
 }  // namespace
 
 PYBIND11_MODULE(sliceform_native, m) {
-  m.doc() = "Sliceform core: model reading and slicing (lengths in mm)";
+  m.doc() = "Sliceform core: model reading, slicing and design (lengths in mm)";
   m.attr("__version__") = SLICEFORM_VERSION;
   static py::exception<Error> error(m, "Error");
   py::register_exception_translator([](std::exception_ptr p) {
@@ -187,5 +152,6 @@ PYBIND11_MODULE(sliceform_native, m) {
   m.def("read_model", &readModelFile, py::arg("path"),
         "Reads STEP, IGES, BREP, STL, OBJ or OFF; returns kind, triangle count, bounds and, "
         "for CAD files, the solids as a BREP string.");
+  bindDesign(m);
   m.def("brep_round_trip", &brepRoundTrip, py::arg("brep"), "Reads a BREP string and writes it back.");
 }

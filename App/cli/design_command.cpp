@@ -135,13 +135,7 @@ class ProgressBar {
 
 // The model at the asked size: longest side, or height along W (u x v), in mm.
 Model sized(Model model, const DesignOptions& o) {
-  if (o.height > 0) {
-    const Interval w = model.mesh.extent(normalized(cross(o.uDirection(), o.vDirection())));
-    const Vec3 box = model.bounds.size();
-    const double longest = std::max({box.x, box.y, box.z});
-    if (!(w.hi - w.lo > 0)) throw Error(ErrorKind::BadInput, "the model has no height to scale");
-    return scaledToSize(model, longest * o.height / (w.hi - w.lo));
-  }
+  if (o.height > 0) return scaledToHeight(model, cross(o.uDirection(), o.vDirection()), o.height);
   return o.size > 0 ? scaledToSize(model, o.size) : model;
 }
 

@@ -13,11 +13,13 @@ namespace {
 
 constexpr const char* kFooter = R"(Exit codes:
   0  success
-  1  internal error (a bug: please report it with the input)
+  1  the design cannot be built (not stable, interlocks or split patches left), or an
+     internal error (a bug: please report it with the input)
   2  wrong command line
   3  the model cannot be used (unreadable, not a closed solid, ...)
   4  a parameter is out of range
-  5  an output cannot be written)";
+  5  an output cannot be written
+  6  cancelled)";
 
 int exitCode(sliceform::ErrorKind kind) {
   switch (kind) {
@@ -29,6 +31,8 @@ int exitCode(sliceform::ErrorKind kind) {
       return 5;
     case sliceform::ErrorKind::Geometry:
       return 1;
+    case sliceform::ErrorKind::Cancelled:
+      return 6;
   }
   return 1;
 }

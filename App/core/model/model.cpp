@@ -274,6 +274,16 @@ Model scaledToSize(const Model& model, double longestSide) {
   return out;
 }
 
+Model scaledToHeight(const Model& model, Vec3 up, double height) {
+  if (!(height > 0) || !std::isfinite(height))
+    throw Error(ErrorKind::BadParameter, "the height must be a positive length in mm");
+  const Interval w = model.mesh.extent(normalized(up));
+  if (!(w.hi - w.lo > 0))
+    throw Error(ErrorKind::BadInput, model.source + ": the model has no height to scale");
+  const Vec3 box = model.bounds.size();
+  return scaledToSize(model, std::max({box.x, box.y, box.z}) * height / (w.hi - w.lo));
+}
+
 void requireClosed(const Model& model) {
   const MeshTopology topo = analyseTopology(model.mesh);
   if (!topo.closed()) throw Error(ErrorKind::BadInput, model.source + ": " + topo.describe());

@@ -34,6 +34,8 @@ Model modelFromMesh(const Mesh& mesh, const std::string& source);
 
 // The model scaled about the origin so that its longest side is `longestSide` mm.
 Model scaledToSize(const Model& model, double longestSide);
+// The model scaled about the origin so that its extent along `up` is `height` mm.
+Model scaledToHeight(const Model& model, Vec3 up, double height);
 
 // Throws BadInput naming the boundary and non-manifold edges if the mesh is not closed.
 void requireClosed(const Model& model);

@@ -14,6 +14,7 @@ enum class ErrorKind {
   BadParameter,  // a parameter is out of range or inconsistent
   Geometry,      // a geometric operation failed on valid input (a bug or OCCT limit)
   Io,            // an output cannot be written
+  Cancelled,     // the user stopped the run
 };
 
 class Error : public std::runtime_error {

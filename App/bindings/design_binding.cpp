@@ -1,0 +1,269 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// sliceform_native.design(): the whole pipeline for the FreeCAD feature. Parameters come as
+// a dict with the CLI's names (lengths in mm, angles in degrees); the result is a Design
+// object that hands out the report, the assembly at any fold angle, the flat patches for
+// sketches, the sheets for TechDraw, and writes the same files as `sliceform design -o`.
+#include <pybind11/functional.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <memory>
+#include <string>
+
+#include "assembly/fold.hpp"
+#include "bindings/convert.hpp"
+#include "frames/scaffold.hpp"
+#include "layout/layout.hpp"
+#include "model/model.hpp"
+#include "output/design_files.hpp"
+#include "output/report_json.hpp"
+#include "pipeline/design.hpp"
+#include "support/error.hpp"
+
+namespace py = pybind11;
+
+namespace sliceform {
+namespace {
+
+// The parameters of one run, read from the dict; unknown keys are an error (a misspelt
+// property must not be ignored silently).
+struct Run {
+  DesignParams params;
+  double size = 0, height = 0;
+};
+
+template <typename T>
+void take(py::dict& d, const char* key, T& value) {
+  if (!d.contains(key)) return;
+  value = d[key].cast<T>();
+  d.attr("pop")(key);
+}
+
+Run readParams(py::dict given) {
+  py::dict d(given.attr("copy")());
+  Run run;
+  ArrangementParams& a = run.params.arrangement;
+  Triple u{1, 0, 0}, v{0, 1, 0};
+  take(d, "u", u);
+  take(d, "v", v);
+  a.u = toVec(u);
+  a.v = toVec(v);
+  take(d, "slices", a.slices);
+  take(d, "interval", a.interval);
+  take(d, "tau_a", a.tauA);
+  take(d, "tau_m", a.tauM);
+  take(d, "min_hinge_length", a.hinges.minHingeLength);
+  take(d, "min_slot_edge_distance", a.hinges.minSlotEdgeDistance);
+  take(d, "max_spacing", a.stabilize.maxSpacing);
+  std::string scheme = "both", slotEnd = "square", uSlots = "up", sheet = "A4";
+  take(d, "scheme", scheme);
+  if (scheme != "both" && scheme != "u" && scheme != "v")
+    throw Error(ErrorKind::BadParameter, "the scheme must be both, u or v, not " + scheme);
+  a.stabilize.scheme = scheme == "u" ? Scheme::DominantU : scheme == "v" ? Scheme::DominantV : Scheme::Both;
+  SlotParams& s = run.params.slots;
+  take(d, "thickness", s.thickness);
+  take(d, "clearance", s.clearance);
+  take(d, "kerf", s.kerf);
+  take(d, "slot_end", slotEnd);
+  if (slotEnd != "square" && slotEnd != "round")
+    throw Error(ErrorKind::BadParameter, "the slot end must be square or round, not " + slotEnd);
+  s.end = slotEnd == "round" ? SlotEnd::Round : SlotEnd::Square;
+  take(d, "u_slots", uSlots);
+  s.uUp = uSlots != "down";
+  double margin = 10, spacing = 3;
+  bool rotate = true;
+  take(d, "sheet", sheet);
+  take(d, "margin", margin);
+  take(d, "spacing", spacing);
+  take(d, "rotate", rotate);
+  run.params.sheet = sheetSpec(sheet, margin, spacing);
+  run.params.sheet.rotate = rotate;
+  take(d, "size", run.size);
+  take(d, "height", run.height);
+  if (!d.empty())
+    throw Error(ErrorKind::BadParameter,
+                "unknown design parameter " + py::str(d.begin()->first).cast<std::string>());
+  return run;
+}
+
+Model sourceModel(const py::dict& source) {
+  const std::string name = source.contains("name") ? source["name"].cast<std::string>() : "the source";
+  if (source.contains("brep")) return modelFromShape(shapeFromBrep(source["brep"].cast<std::string>()), name);
+  if (source.contains("points")) {
+    Model model = modelFromMesh(meshFromLists(source["points"].cast<std::vector<Triple>>(),
+                                              source["triangles"].cast<std::vector<Index3>>()),
+                                name);
+    requireClosed(model);
+    return model;
+  }
+  throw Error(ErrorKind::BadInput, name + ": the source holds neither a shape nor a mesh");
+}
+
+// What Python holds: the sized model, the parameters and the design made from them.
+struct PyDesign {
+  Model model;
+  DesignParams params;
+  Design design;
+};
+
+py::dict element(const CutElement& e) {
+  py::dict d;
+  switch (e.kind) {
+    case CutElement::Kind::Line:
+      d["kind"] = "line";
+      break;
+    case CutElement::Kind::Arc:
+      d["kind"] = "arc";
+      break;
+    case CutElement::Kind::Circle:
+      d["kind"] = "circle";
+      break;
+  }
+  d["a"] = py::make_tuple(e.a.x, e.a.y);
+  d["b"] = py::make_tuple(e.b.x, e.b.y);
+  if (e.kind != CutElement::Kind::Line) {
+    d["centre"] = py::make_tuple(e.centre.x, e.centre.y);
+    d["radius"] = e.radius;
+    d["start"] = e.start;
+    d["end"] = e.end;
+    d["ccw"] = e.ccw;
+  }
+  return d;
+}
+
+py::list loopsOf(const std::vector<CutLoop>& loops) {
+  py::list out;
+  for (const CutLoop& loop : loops) {
+    py::list elements;
+    for (const CutElement& e : loop) elements.append(element(e));
+    out.append(elements);
+  }
+  return out;
+}
+
+py::list strokesOf(const std::vector<Stroke>& strokes) {
+  py::list out;
+  for (const Stroke& s : strokes) {
+    py::list points;
+    for (const Vec2& p : s) points.append(py::make_tuple(p.x, p.y));
+    out.append(points);
+  }
+  return out;
+}
+
+py::list flatPatches(const PyDesign& self) {
+  const Arrangement& a = self.design.arrangement;
+  py::list out;
+  for (size_t k = 0; k < self.design.layout.patches.size(); ++k) {
+    const FlatPatch& flat = self.design.layout.patches[k];
+    const PatchPlane plane = patchPlane(a, flat.patch);
+    py::dict d;
+    d["id"] = flat.id;
+    d["family"] = flat.family == Family::U ? "U" : "V";
+    d["origin"] = toTuple(plane.origin);
+    d["normal"] = toTuple(plane.normal);
+    d["x_axis"] = toTuple(plane.xAxis);
+    d["y_axis"] = toTuple(plane.yAxis);
+    d["loops"] = loopsOf(flat.cut);
+    std::vector<Stroke> strokes = flat.name.strokes;
+    for (const Label& l : flat.partners) strokes.insert(strokes.end(), l.strokes.begin(), l.strokes.end());
+    d["engrave"] = strokesOf(strokes);
+    out.append(d);
+  }
+  return out;
+}
+
+py::dict sheets(const PyDesign& self) {
+  const SheetSpec& spec = self.design.layout.sheet;
+  py::dict d;
+  d["name"] = spec.name;
+  d["width"] = spec.width;
+  d["height"] = spec.height;
+  d["margin"] = spec.margin;
+  py::list pages;
+  for (const SheetDrawing& s : sheetDrawings(self.design.layout)) {
+    py::dict page;
+    page["cut"] = loopsOf(s.cut);
+    page["engrave"] = strokesOf(s.engrave);
+    pages.append(page);
+  }
+  d["sheets"] = pages;
+  return d;
+}
+
+}  // namespace
+
+void bindDesign(py::module_& m) {
+  py::class_<PyDesign, std::shared_ptr<PyDesign>>(m, "Design", "A designed sliceform (see design())")
+      .def(
+          "report_json", [](const PyDesign& d) { return reportJson(d.model, d.params, d.design).dump(1); },
+          "report.json's text (docs/report-format.md)")
+      .def(
+          "timings",
+          [](const PyDesign& d) {
+            py::list out;
+            for (const StageTime& t : d.design.timings) out.append(py::make_tuple(t.stage, t.ms));
+            return out;
+          },
+          "(stage, milliseconds) per stage")
+      .def(
+          "assembly",
+          [](const PyDesign& d, double theta) {
+            if (!(theta > 0 && theta <= 90))
+              throw Error(ErrorKind::BadParameter, "the fold angle must be in (0, 90] degrees");
+            return brepFromShape(assemble(d.design.arrangement, d.design.patches, theta));
+          },
+          py::arg("fold_angle") = 90.0,
+          "The assembled sliceform at a fold angle in degrees (90: popped up) as a BREP string: a "
+          "compound of one face per patch, in the source's coordinates (after sizing)")
+      .def("flat_patches", &flatPatches,
+           "Per patch: id, family, its plane (origin, normal, x_axis, y_axis) and the cut loops in "
+           "plane coordinates as line/arc/circle elements, and the engraved label strokes")
+      .def("sheets", &sheets, "The nested sheets: size and, per sheet, cut loops and engraved strokes")
+      .def(
+          "write_files",
+          [](const PyDesign& d, const std::string& folder, double theta) {
+            const DesignFiles files = writeDesignFiles(d.model, d.params, d.design, folder, theta);
+            py::dict out;
+            out["written"] = files.written;
+            out["removed"] = files.removed;
+            return out;
+          },
+          py::arg("folder"), py::arg("fold_angle") = 90.0,
+          "Writes the same files as `sliceform design -o FOLDER`; returns their names");
+
+  m.def(
+      "design",
+      [](const py::dict& source, const py::dict& params, const py::object& progress) {
+        Run run = readParams(params);
+        auto result = std::make_shared<PyDesign>();
+        Model model = sourceModel(source);
+        if (run.height > 0) {
+          model =
+              scaledToHeight(model, cross(run.params.arrangement.u, run.params.arrangement.v), run.height);
+        } else if (run.size > 0) {
+          model = scaledToSize(model, run.size);
+        }
+        result->model = std::move(model);
+        result->params = run.params;
+        // The stages run without the GIL; the progress callback takes it back for its call.
+        Progress report;
+        if (!progress.is_none())
+          report = [&progress](const char* stage) {
+            py::gil_scoped_acquire gil;
+            if (!progress(stage).cast<bool>()) throw Error(ErrorKind::Cancelled, "cancelled by the user");
+          };
+        py::gil_scoped_release release;
+        result->design = runDesign(result->model, result->params, report);
+        return result;
+      },
+      py::arg("source"), py::arg("params") = py::dict(), py::arg("progress") = py::none(),
+      "Designs a sliceform. `source`: {'brep': BREP string} or {'points': [(x, y, z)], "
+      "'triangles': [(i, j, k)]}, with an optional 'name' for messages. `params`: the design "
+      "command's options by name (u, v, slices, interval, tau_a, tau_m, scheme, "
+      "min_hinge_length, min_slot_edge_distance, max_spacing, thickness, clearance, kerf, "
+      "slot_end, u_slots, sheet, margin, spacing, rotate, size, height). `progress(stage)` is "
+      "called before each stage; returning False cancels the run (Error 'cancelled').");
+}
+
+}  // namespace sliceform
