@@ -160,6 +160,7 @@ py::list flatPatches(const PyDesign& self) {
     py::dict d;
     d["id"] = flat.id;
     d["family"] = flat.family == Family::U ? "U" : "V";
+    d["exact"] = self.design.patches[flat.patch].exact;
     d["origin"] = toTuple(plane.origin);
     d["normal"] = toTuple(plane.normal);
     d["x_axis"] = toTuple(plane.xAxis);
@@ -174,18 +175,24 @@ py::list flatPatches(const PyDesign& self) {
 }
 
 py::dict sheets(const PyDesign& self) {
-  const SheetSpec& spec = self.design.layout.sheet;
+  const SheetLayout& layout = self.design.layout;
   py::dict d;
-  d["name"] = spec.name;
-  d["width"] = spec.width;
-  d["height"] = spec.height;
-  d["margin"] = spec.margin;
+  d["name"] = layout.sheet.name;
+  d["width"] = layout.sheet.width;
+  d["height"] = layout.sheet.height;
+  d["margin"] = layout.sheet.margin;
+  // Per sheet, its patches one by one: TechDraw's hidden-line pass grows much faster than
+  // the edge count, so the workbench gives each patch a view of its own.
   py::list pages;
-  for (const SheetDrawing& s : sheetDrawings(self.design.layout)) {
-    py::dict page;
-    page["cut"] = loopsOf(s.cut);
-    page["engrave"] = strokesOf(s.engrave);
-    pages.append(page);
+  for (int s = 0; s < layout.packing.sheets; ++s) pages.append(py::list());
+  for (size_t k = 0; k < layout.patches.size(); ++k) {
+    const Placement& at = layout.packing.placements[k];
+    const SheetDrawing drawing = placedDrawing(layout.patches[k], at);
+    py::dict patch;
+    patch["id"] = layout.patches[k].id;
+    patch["cut"] = loopsOf(drawing.cut);
+    patch["engrave"] = strokesOf(drawing.engrave);
+    pages[at.sheet].cast<py::list>().append(patch);
   }
   d["sheets"] = pages;
   return d;
@@ -217,9 +224,10 @@ void bindDesign(py::module_& m) {
           "The assembled sliceform at a fold angle in degrees (90: popped up) as a BREP string: a "
           "compound of one face per patch, in the source's coordinates (after sizing)")
       .def("flat_patches", &flatPatches,
-           "Per patch: id, family, its plane (origin, normal, x_axis, y_axis) and the cut loops in "
+           "Per patch: id, family, exact (from the BRep's exact sections), its plane (origin, normal, x_axis, y_axis) and the cut loops in "
            "plane coordinates as line/arc/circle elements, and the engraved label strokes")
-      .def("sheets", &sheets, "The nested sheets: size and, per sheet, cut loops and engraved strokes")
+      .def("sheets", &sheets, "The nested sheets: size and, per sheet, a list of its patches, each with id, cut loops "
+           "and engraved strokes in sheet coordinates")
       .def(
           "write_files",
           [](const PyDesign& d, const std::string& folder, double theta) {

@@ -50,19 +50,26 @@ SheetLayout layOut(const Design& design, const SheetSpec& sheet) {
   return layout;
 }
 
+SheetDrawing placedDrawing(const FlatPatch& patch, const Placement& at) {
+  SheetDrawing drawing;
+  for (const CutLoop& loop : patch.cut) {
+    CutLoop moved;
+    for (const CutElement& e : loop) moved.push_back(placed(e, at));
+    drawing.cut.push_back(moved);
+  }
+  for (const Label* l : labelsOf(patch))
+    for (const Stroke& s : upright(*l, at).strokes) drawing.engrave.push_back(s);
+  return drawing;
+}
+
 std::vector<SheetDrawing> sheetDrawings(const SheetLayout& layout) {
   std::vector<SheetDrawing> sheets(layout.packing.sheets);
   for (size_t k = 0; k < layout.patches.size(); ++k) {
-    const FlatPatch& patch = layout.patches[k];
     const Placement& at = layout.packing.placements[k];
+    SheetDrawing patch = placedDrawing(layout.patches[k], at);
     SheetDrawing& sheet = sheets[at.sheet];
-    for (const CutLoop& loop : patch.cut) {
-      CutLoop moved;
-      for (const CutElement& e : loop) moved.push_back(placed(e, at));
-      sheet.cut.push_back(moved);
-    }
-    for (const Label* l : labelsOf(patch))
-      for (const Stroke& s : upright(*l, at).strokes) sheet.engrave.push_back(s);
+    sheet.cut.insert(sheet.cut.end(), patch.cut.begin(), patch.cut.end());
+    sheet.engrave.insert(sheet.engrave.end(), patch.engrave.begin(), patch.engrave.end());
   }
   return sheets;
 }

@@ -27,5 +27,7 @@ struct SheetDrawing {
   std::vector<Stroke> engrave;
 };
 std::vector<SheetDrawing> sheetDrawings(const SheetLayout& layout);
+// One patch as it is drawn on its sheet (labels upright): the part of sheetDrawings() it adds.
+SheetDrawing placedDrawing(const FlatPatch& patch, const Placement& at);
 
 }  // namespace sliceform

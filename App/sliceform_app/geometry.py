@@ -1,0 +1,77 @@
+# SPDX-License-Identifier: LGPL-2.1-or-later
+"""The core's flat geometry as FreeCAD geometry: line/arc/circle elements become Part
+curves; on exact patches, runs of short segments (the core's polygonised free-form curves)
+become one B-spline each, so a sketch holds a handful of curves, not hundreds of lines."""
+import math
+
+import FreeCAD
+import Part
+
+V = FreeCAD.Vector
+
+# A run of at least this many segments, each shorter than this, is a polygonised curve.
+SPLINE_MIN_SEGMENTS = 4
+SPLINE_MAX_SEGMENT = 2.0  # mm
+SPLINE_TOLERANCE = 0.005  # mm: well inside the core's 0.01 mm polygonisation
+
+
+def _length(e):
+    return math.hypot(e["b"][0] - e["a"][0], e["b"][1] - e["a"][1])
+
+
+def curve(e):
+    """A Part curve in the XY plane for one element (dict from the core)."""
+    if e["kind"] == "line":
+        return Part.LineSegment(V(e["a"][0], e["a"][1], 0), V(e["b"][0], e["b"][1], 0))
+    circle = Part.Circle(V(e["centre"][0], e["centre"][1], 0), V(0, 0, 1), e["radius"])
+    if e["kind"] == "circle":
+        return circle
+    # Part arcs run counter-clockwise from the first angle to the second; a clockwise
+    # element is the counter-clockwise arc from its end back to its start.
+    first, second = (e["start"], e["end"]) if e["ccw"] else (e["end"], e["start"])
+    while second <= first:
+        second += 2 * math.pi
+    return Part.ArcOfCircle(circle, first, second)
+
+
+def _spline(points):
+    spline = Part.BSplineCurve()
+    spline.approximate(Points=[V(x, y, 0) for x, y in points], DegMin=3, DegMax=5, Tolerance=SPLINE_TOLERANCE)
+    return spline
+
+
+def loop_curves(loop, splines):
+    """Curves of one closed loop, with short-segment runs merged into B-splines if asked."""
+    if not splines:
+        return [curve(e) for e in loop]
+    out, run = [], []
+
+    def flush():
+        if len(run) >= SPLINE_MIN_SEGMENTS:
+            out.append(_spline([run[0]["a"]] + [e["b"] for e in run]))
+        else:
+            out.extend(curve(e) for e in run)
+        run.clear()
+
+    for e in loop:
+        if e["kind"] == "line" and _length(e) < SPLINE_MAX_SEGMENT:
+            run.append(e)
+        else:
+            flush()
+            out.append(curve(e))
+    flush()
+    return out
+
+
+def plane_placement(patch):
+    """The placement that maps the patch's plane coordinates (x, y, 0) to 3D."""
+    o, x, y, n = (V(*patch[k]) for k in ("origin", "x_axis", "y_axis", "normal"))
+    return FreeCAD.Placement(FreeCAD.Matrix(x.x, y.x, n.x, o.x, x.y, y.y, n.y, o.y, x.z, y.z, n.z, o.z, 0, 0, 0, 1))
+
+
+def patch_drawing(patch):
+    """One patch as drawn on its sheet: cut curves and engraved strokes, one compound in
+    sheet millimetres on the XY plane."""
+    cut = [c.toShape() for loop in patch["cut"] for c in loop_curves(loop, False)]
+    engrave = [Part.makePolygon([V(x, y, 0) for x, y in stroke]) for stroke in patch["engrave"] if len(stroke) > 1]
+    return Part.makeCompound(cut + engrave)
