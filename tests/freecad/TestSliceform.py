@@ -152,3 +152,7 @@ class TestSlicingInFreeCAD(unittest.TestCase):
         self.doc.recompute()
         with self.assertRaisesRegex(native().Error, "no closed solid"):
             slices.slice_object(face, count=4)
+
+
+# The feature's tests live in their own file; importing the class runs them here too.
+from TestSliceformFeature import TestSliceformFeature  # noqa: E402,F401

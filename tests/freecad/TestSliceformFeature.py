@@ -1,0 +1,235 @@
+# SPDX-License-Identifier: LGPL-2.1-or-later
+"""Headless tests of the Sliceform feature: on a Part torus, a PartDesign body with a
+pocket and a mesh; stable, no interlocks, sketches that solve, TechDraw pages that write
+DXF; editing the source redesigns; a failure leaves the document and the source intact;
+save, close, reopen and recompute. Run through TestSliceform (tests/freecad/run.sh)."""
+import os
+import re
+import tempfile
+import unittest
+
+import FreeCAD
+import Mesh
+import Part
+import Sketcher  # noqa: F401  (registers Sketcher::SketchObject)
+import TechDraw
+
+SLICES = 24  # small, so the suite stays quick; the pipeline is the CLI's
+
+
+def _rectangle(sketch, x0, y0, x1, y1):
+    V = FreeCAD.Vector
+    pts = [V(x0, y0, 0), V(x1, y0, 0), V(x1, y1, 0), V(x0, y1, 0)]
+    sketch.addGeometry([Part.LineSegment(pts[i], pts[(i + 1) % 4]) for i in range(4)], False)
+
+
+def make_body_with_pocket(doc):
+    body = doc.addObject("PartDesign::Body", "Body")
+    pad_sketch = body.newObject("Sketcher::SketchObject", "PadSketch")
+    _rectangle(pad_sketch, 0, 0, 80, 50)
+    pad = body.newObject("PartDesign::Pad", "Pad")
+    pad.Profile = pad_sketch
+    pad.Length = 40
+    pocket_sketch = body.newObject("Sketcher::SketchObject", "PocketSketch")
+    pocket_sketch.Support = (pad, ["Face6"])  # the top face
+    pocket_sketch.MapMode = "FlatFace"
+    pocket_sketch.addGeometry(Part.Circle(FreeCAD.Vector(40, 25, 0), FreeCAD.Vector(0, 0, 1), 12), False)
+    pocket = body.newObject("PartDesign::Pocket", "Pocket")
+    pocket.Profile = pocket_sketch
+    pocket.Length = 25
+    doc.recompute()
+    return body, pad, pocket
+
+
+class TestSliceformFeature(unittest.TestCase):
+    def setUp(self):
+        self.doc = FreeCAD.newDocument("SliceformFeature")
+
+    def tearDown(self):
+        FreeCAD.closeDocument(self.doc.Name)
+
+    def check_design(self, sliceform):
+        self.assertTrue(sliceform.isValid(), sliceform.getStatusString())
+        self.assertTrue(sliceform.Stable, sliceform.Report)
+        self.assertEqual(sliceform.Interlocks, 0)
+        self.assertGreaterEqual(sliceform.PatchCount, 4)
+        self.assertEqual(len(sliceform.Shape.Faces), sliceform.PatchCount)
+        self.assertEqual(len(sliceform.PatchSketches), sliceform.PatchCount)
+        for sketch in sliceform.PatchSketches:
+            self.assertEqual(sketch.solve(), 0, sketch.Label)  # 0: solved, no conflicts or redundancies
+            self.assertTrue(sketch.isValid(), sketch.getStatusString())
+            self.assertTrue(sketch.Shape.Wires and all(w.isClosed() for w in sketch.Shape.Wires), sketch.Label)
+        # The sketch lies on its patch: same area as the patch face in the assembly at 90°.
+        outline = Part.Face(sorted(sketch.Shape.Wires, key=lambda w: -Part.Face(w).Area)[0])
+        self.assertGreater(outline.Area, 0)
+        self.assertEqual(len(sliceform.Pages), sliceform.SheetCount)
+        page = sliceform.Pages[0]
+        self.assertEqual(page.TypeId, "TechDraw::DrawPage")
+        self.assertTrue(page.Views)
+        dxf = os.path.join(tempfile.mkdtemp(), "sheet.dxf")
+        TechDraw.writeDXFPage(page, dxf)
+        text = open(dxf).read()
+        self.assertIn("ENTITIES", text)
+        self.assertGreater(len(re.findall(r"\n(?:LINE|ARC|CIRCLE|SPLINE|LWPOLYLINE|POLYLINE)\n", text)), 20)
+
+    def test_torus(self):
+        from sliceform_app import feature
+
+        torus = self.doc.addObject("Part::Torus", "Torus")
+        torus.Radius1, torus.Radius2 = 40, 15
+        self.doc.recompute()
+        sliceform = feature.makeSliceform(torus, Slices=SLICES)
+        self.check_design(sliceform)
+        # Arcs and splines, not only lines: the torus' sections are free-form curves.
+        kinds = {type(g).__name__ for s in sliceform.PatchSketches for g in s.Geometry}
+        self.assertIn("BSplineCurve", kinds)
+        volume_before = torus.Shape.Volume
+        before = [f.Area for f in sliceform.Shape.Faces]
+        names = [s.Name for s in sliceform.PatchSketches]
+        torus.Radius2 = 10
+        self.doc.recompute()
+        self.check_design(sliceform)
+        self.assertNotEqual(before, [f.Area for f in sliceform.Shape.Faces])
+        self.assertLess(sum(f.Area for f in sliceform.Shape.Faces), sum(before))
+        # Sketches are regenerated in place: the first ones keep their names.
+        common = min(len(names), len(sliceform.PatchSketches))
+        self.assertEqual(names[:common], [s.Name for s in sliceform.PatchSketches][:common])
+        self.assertNotEqual(torus.Shape.Volume, volume_before)
+
+    def test_fold_angle_poses_the_patches(self):
+        from sliceform_app import feature
+
+        sphere = self.doc.addObject("Part::Sphere", "Sphere")
+        sphere.Radius = 40
+        self.doc.recompute()
+        sliceform = feature.makeSliceform(sphere, Slices=16)
+        popped = sliceform.Shape.BoundBox
+        sliceform.FoldAngle = 20
+        self.doc.recompute()
+        folded = sliceform.Shape.BoundBox
+        self.assertTrue(sliceform.isValid())
+        self.assertEqual(len(sliceform.Shape.Faces), sliceform.PatchCount)
+        # Folding flattens the lattice: the footprint across U x V shrinks.
+        self.assertLess(folded.XLength * folded.YLength, 0.8 * popped.XLength * popped.YLength)
+
+    def test_partdesign_body_with_pocket(self):
+        from sliceform_app import feature
+
+        body, pad, pocket = make_body_with_pocket(self.doc)
+        self.assertTrue(pocket.isValid())
+        # The pocket is 7 % of the volume: under the default cylinder error budget (tauA 0.1)
+        # the paper's approximation fills it in. With 0.02 it gets cylinders of its own.
+        sliceform = feature.makeSliceform(body, Slices=SLICES, TauA=0.02)
+        self.check_design(sliceform)
+        # The pocket is in the design: a U-patch across it (x in 28..52) has the notch, so
+        # less paper than the 50 x 40 mm of a full section.
+        across = [p for p in sliceform.Proxy.report["patches"] if p["family"] == "U" and 30 < p["origin"][0] < 50]
+        self.assertTrue(across)
+        self.assertLess(min(p["area_mm2"] for p in across), 0.85 * 50 * 40)
+        height_before = sliceform.Shape.BoundBox.ZLength
+        pad.Length = 60
+        self.doc.recompute()
+        self.check_design(sliceform)
+        self.assertAlmostEqual(sliceform.Shape.BoundBox.ZLength, height_before + 20, delta=2)
+
+    def test_mesh(self):
+        from sliceform_app import feature
+
+        mesh = self.doc.addObject("Mesh::Feature", "Ball")
+        mesh.Mesh = Mesh.createSphere(40, 48)
+        mesh.Placement.Base = FreeCAD.Vector(200, 0, 0)
+        self.doc.recompute()
+        sliceform = feature.makeSliceform(mesh, Slices=SLICES)
+        self.check_design(sliceform)
+        # Read in global placement.
+        self.assertAlmostEqual(sliceform.Shape.BoundBox.Center.x, 200, delta=5)
+
+    def test_failure_is_an_error_state_and_leaves_the_source(self):
+        from sliceform_app import feature
+
+        box = self.doc.addObject("Part::Box", "Box")
+        box.Length = box.Width = box.Height = 60
+        self.doc.recompute()
+        sliceform = feature.makeSliceform(box, Slices=SLICES)
+        self.assertTrue(sliceform.isValid())
+        brep = box.Shape.exportBrepToString()
+        sliceform.UDirection = FreeCAD.Vector(1, 1, 0)  # not orthogonal to V = (0, 1, 0)
+        self.doc.recompute()
+        self.assertFalse(sliceform.isValid())
+        self.assertIn("orthogonal", sliceform.getStatusString())
+        self.assertTrue(box.isValid())
+        self.assertEqual(box.Shape.exportBrepToString(), brep)
+        path = os.path.join(tempfile.mkdtemp(), "failed.FCStd")
+        self.doc.saveAs(path)  # still saveable
+        self.assertTrue(os.path.getsize(path) > 0)
+        sliceform.UDirection = FreeCAD.Vector(1, 0, 0)
+        self.doc.recompute()
+        self.assertTrue(sliceform.isValid(), sliceform.getStatusString())
+
+    def test_missing_source_is_an_error(self):
+        from sliceform_app import feature
+
+        obj = self.doc.addObject("Part::FeaturePython", "Sliceform")
+        feature.Sliceform(obj)
+        self.doc.recompute()
+        self.assertFalse(obj.isValid())
+        self.assertIn("no Source", obj.getStatusString())
+
+    def test_save_close_reopen_recompute(self):
+        from sliceform_app import feature
+
+        cylinder = self.doc.addObject("Part::Cylinder", "Cylinder")
+        cylinder.Radius, cylinder.Height = 30, 70
+        # Lying along X: the U sections are circles, which the sketches keep as arcs.
+        cylinder.Placement.Rotation = FreeCAD.Rotation(FreeCAD.Vector(0, 1, 0), 90)
+        self.doc.recompute()
+        sliceform = feature.makeSliceform(cylinder, Slices=SLICES, Thickness=1.5, SheetSize="A3")
+        self.check_design(sliceform)
+        kinds = {type(g).__name__ for s in sliceform.PatchSketches for g in s.Geometry}
+        self.assertTrue(kinds & {"ArcOfCircle", "Circle"}, kinds)
+        patches, report = sliceform.PatchCount, sliceform.Report
+        path = os.path.join(tempfile.mkdtemp(), "sliceform.FCStd")
+        self.doc.saveAs(path)
+        FreeCAD.closeDocument(self.doc.Name)
+        self.doc = FreeCAD.openDocument(path)
+        sliceform = self.doc.getObject("Sliceform")
+        self.assertIsInstance(sliceform.Proxy, feature.Sliceform)
+        self.assertEqual(sliceform.PatchCount, patches)
+        self.assertAlmostEqual(sliceform.Thickness.Value, 1.5)
+        self.assertEqual(sliceform.SheetSize, "A3")
+        sliceform.touch()
+        self.doc.recompute()
+        self.check_design(sliceform)
+        self.assertEqual(sliceform.Report, report)  # the same design again
+
+    def test_init_properties_is_idempotent_and_migrates(self):
+        from sliceform_app import feature
+
+        obj = self.doc.addObject("Part::FeaturePython", "Old")
+        obj.addProperty("App::PropertyLink", "Source", "Sliceform", "")
+        obj.addProperty("App::PropertyLength", "Thickness", "Material", "")
+        obj.Thickness = 2
+        feature.initProperties(obj)  # an older document: the rest is added, values kept
+        feature.initProperties(obj)
+        self.assertAlmostEqual(obj.Thickness.Value, 2)
+        self.assertEqual(obj.SheetSize, "A4")
+        self.assertEqual(obj.FoldAngle.Value, 90)
+        self.assertEqual(obj.getGroupOfProperty("Slices"), "Slicing")
+        self.assertIn("ReadOnly", obj.getEditorMode("PatchCount"))
+
+    def test_write_files_matches_the_cli_set(self):
+        from sliceform_app import feature
+
+        sphere = self.doc.addObject("Part::Sphere", "Sphere")
+        sphere.Radius = 30
+        self.doc.recompute()
+        sliceform = feature.makeSliceform(sphere, Slices=16)
+        folder = tempfile.mkdtemp()
+        written = sliceform.Proxy.write_files(folder)["written"]
+        for name in ("report.json", "sheets.pdf", "sheet-1.svg", "sheet-1.dxf", "assembly.step"):
+            self.assertIn(name, written)
+            self.assertGreater(os.path.getsize(os.path.join(folder, name)), 0)
+
+
+if __name__ == "__main__":
+    unittest.main()
