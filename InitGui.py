@@ -16,9 +16,12 @@ class SliceformWorkbench(FreeCADGui.Workbench):
     def Initialize(self):
         from sliceform_gui import commands
 
+        import sliceform_gui
+
         names = commands.register()
         self.appendToolbar("Sliceform", names)
         self.appendMenu("&Sliceform", names)
+        FreeCADGui.addPreferencePage(sliceform_gui.ui_path("preferences.ui"), "Sliceform")
 
     def GetClassName(self):
         return "Gui::PythonWorkbench"

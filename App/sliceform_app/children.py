@@ -152,6 +152,8 @@ def update_pages(feature, sheets):
         page.Template.recompute()
         page.Template.purgeTouched()
         _update_views(feature, page, patches)
+        if FreeCAD.GuiUp and hasattr(page.ViewObject, "ShowFrames"):
+            page.ViewObject.ShowFrames = False  # a sheet to cut, not a drawing: no view frames or labels
         page.recompute()
         page.purgeTouched()
     feature.Pages = pages

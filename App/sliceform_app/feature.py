@@ -169,15 +169,34 @@ class Sliceform:
         return self.design.write_files(folder, fold_angle)
 
 
+PREFERENCES = "User parameter:BaseApp/Preferences/Mod/Sliceform"
+# Defaults a user sets once on the preferences page (Edit > Preferences > Sliceform).
+PREFERRED = ("Thickness", "Clearance", "Kerf", "Slices", "SheetSize", "Margin", "Spacing")
+
+
+def preferred_properties():
+    """Property values from the preferences page, for the ones the user has set."""
+    group = FreeCAD.ParamGet(PREFERENCES)
+    values = {}
+    for name in PREFERRED:
+        if name == "Slices" and group.GetInt(name, 0) > 0:
+            values[name] = group.GetInt(name)
+        elif name == "SheetSize" and 0 <= group.GetInt(name, -1) < 3:
+            values[name] = ("A4", "A3", "Letter")[group.GetInt(name)]  # a combo box stores its index
+        elif name not in ("Slices", "SheetSize") and group.GetFloat(name, -1.0) >= 0:
+            values[name] = group.GetFloat(name)
+    return values
+
+
 def makeSliceform(source, doc=None, **properties):
     """Adds a Sliceform feature for `source` (any shape-bearing object or a mesh), sets
-    the given properties and recomputes. Returns the feature."""
+    the preferred defaults and then the given properties, and recomputes. Returns it."""
     doc = doc or source.Document
     obj = doc.addObject("Part::FeaturePython", "Sliceform")
     Sliceform(obj)
     obj.Source = source
     obj.Label = "{} sliceform".format(source.Label)
-    for name, value in properties.items():
+    for name, value in dict(preferred_properties(), **properties).items():
         setattr(obj, name, value)
     if FreeCAD.GuiUp:
         from sliceform_gui import view_provider

@@ -8,3 +8,7 @@ RESOURCES = os.path.join(os.path.dirname(os.path.dirname(os.path.dirname(os.path
 
 def icon_path(name):
     return os.path.join(RESOURCES, "icons", name)
+
+
+def ui_path(name):
+    return os.path.join(RESOURCES, "ui", name)
