@@ -224,9 +224,11 @@ void bindDesign(py::module_& m) {
           "The assembled sliceform at a fold angle in degrees (90: popped up) as a BREP string: a "
           "compound of one face per patch, in the source's coordinates (after sizing)")
       .def("flat_patches", &flatPatches,
-           "Per patch: id, family, exact (from the BRep's exact sections), its plane (origin, normal, x_axis, y_axis) and the cut loops in "
+           "Per patch: id, family, exact (from the BRep's exact sections), its plane (origin, normal, "
+           "x_axis, y_axis) and the cut loops in "
            "plane coordinates as line/arc/circle elements, and the engraved label strokes")
-      .def("sheets", &sheets, "The nested sheets: size and, per sheet, a list of its patches, each with id, cut loops "
+      .def("sheets", &sheets,
+           "The nested sheets: size and, per sheet, a list of its patches, each with id, cut loops "
            "and engraved strokes in sheet coordinates")
       .def(
           "write_files",
@@ -246,10 +248,10 @@ void bindDesign(py::module_& m) {
         Run run = readParams(params);
         auto result = std::make_shared<PyDesign>();
         Model model = sourceModel(source);
-        if (run.height > 0) {
+        if (run.height != 0) {
           model =
               scaledToHeight(model, cross(run.params.arrangement.u, run.params.arrangement.v), run.height);
-        } else if (run.size > 0) {
+        } else if (run.size != 0) {
           model = scaledToSize(model, run.size);
         }
         result->model = std::move(model);

@@ -135,8 +135,9 @@ class ProgressBar {
 
 // The model at the asked size: longest side, or height along W (u x v), in mm.
 Model sized(Model model, const DesignOptions& o) {
-  if (o.height > 0) return scaledToHeight(model, cross(o.uDirection(), o.vDirection()), o.height);
-  return o.size > 0 ? scaledToSize(model, o.size) : model;
+  // 0 keeps the size; anything else must be a length (scaledTo* refuse negatives and NaN).
+  if (o.height != 0) return scaledToHeight(model, cross(o.uDirection(), o.vDirection()), o.height);
+  return o.size != 0 ? scaledToSize(model, o.size) : model;
 }
 
 void runDesign(DesignOptions o) {

@@ -61,6 +61,7 @@ class Stopwatch {
 Arrangement arrange(const Model& model, const ArrangementParams& params) {
   checkParams(params);
   requireClosed(model);
+  requireOneSolid(model);
   Arrangement a;
   Stopwatch clock(a.timings);
   const Vec3 w = cross(params.u, params.v);

@@ -89,6 +89,7 @@ TopoDS_Shape readCad(const std::string& path, const std::string& ext) {
 
 Mesh readMeshFile(const std::string& path, const std::string& ext) {
   if (ext == ".off") return readOff(path);
+  if (ext == ".obj") checkObjIndices(path);
   Handle(Poly_Triangulation) poly =
       ext == ".stl" ? RWStl::ReadFile(path.c_str()) : RWObj::ReadFile(path.c_str());
   if (poly.IsNull() || poly->NbTriangles() == 0)
@@ -287,6 +288,55 @@ Model scaledToHeight(const Model& model, Vec3 up, double height) {
 void requireClosed(const Model& model) {
   const MeshTopology topo = analyseTopology(model.mesh);
   if (!topo.closed()) throw Error(ErrorKind::BadInput, model.source + ": " + topo.describe());
+}
+
+std::vector<size_t> separateSolids(const Mesh& mesh) {
+  // Connected pieces of the (welded) mesh, then pieces grouped while their boxes touch:
+  // a void inside a solid, or solids of an assembly that touch, stay one object.
+  boost::disjoint_sets_with_storage<> vertices(mesh.vertices.size());
+  for (const auto& t : mesh.triangles) {
+    vertices.union_set(t[0], t[1]);
+    vertices.union_set(t[0], t[2]);
+  }
+  std::map<size_t, size_t> pieceOf;
+  std::vector<Box3> boxes;
+  std::vector<size_t> triangles;
+  for (const auto& t : mesh.triangles) {
+    const auto [it, added] = pieceOf.emplace(vertices.find_set(t[0]), boxes.size());
+    if (added) boxes.emplace_back(), triangles.push_back(0);
+    for (uint32_t v : t) boxes[it->second].add(mesh.vertices[v]);
+    ++triangles[it->second];
+  }
+  const double gap = 1e-6 * mesh.bounds().diagonal();
+  auto touch = [gap](const Box3& a, const Box3& b) {
+    return a.min.x <= b.max.x + gap && b.min.x <= a.max.x + gap && a.min.y <= b.max.y + gap &&
+           b.min.y <= a.max.y + gap && a.min.z <= b.max.z + gap && b.min.z <= a.max.z + gap;
+  };
+  // Sweep along x so a soup of many small pieces is not compared pair by pair.
+  std::vector<size_t> order(boxes.size());
+  for (size_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::sort(order.begin(), order.end(), [&](size_t a, size_t b) { return boxes[a].min.x < boxes[b].min.x; });
+  boost::disjoint_sets_with_storage<> groups(boxes.size());
+  for (size_t i = 0; i < order.size(); ++i)
+    for (size_t j = i + 1; j < order.size() && boxes[order[j]].min.x <= boxes[order[i]].max.x + gap; ++j)
+      if (touch(boxes[order[i]], boxes[order[j]])) groups.union_set(order[i], order[j]);
+  std::map<size_t, size_t> count;
+  for (size_t i = 0; i < boxes.size(); ++i) count[groups.find_set(i)] += triangles[i];
+  std::vector<size_t> out;
+  for (const auto& [group, n] : count) out.push_back(n);
+  std::sort(out.rbegin(), out.rend());
+  return out;
+}
+
+void requireOneSolid(const Model& model) {
+  const std::vector<size_t> solids = separateSolids(model.mesh);
+  if (solids.size() <= 1) return;
+  std::string sizes;
+  for (size_t i = 0; i < solids.size() && i < 5; ++i) sizes += (i ? ", " : "") + std::to_string(solids[i]);
+  throw Error(ErrorKind::BadInput,
+              model.source + ": the model is " + std::to_string(solids.size()) + " separate solids (" +
+                  sizes + (solids.size() > 5 ? ", ..." : "") +
+                  " triangles); one sliceform holds one solid together: design each on its own");
 }
 
 }  // namespace sliceform

@@ -40,7 +40,15 @@ Model scaledToHeight(const Model& model, Vec3 up, double height);
 // Throws BadInput naming the boundary and non-manifold edges if the mesh is not closed.
 void requireClosed(const Model& model);
 
+// Triangle counts of the model's separate solids, largest first: connected pieces whose
+// bounding boxes do not touch (a void, or touching parts of an assembly, are not separate).
+std::vector<size_t> separateSolids(const Mesh& mesh);
+// Throws BadInput naming the pieces if there is more than one separate solid.
+void requireOneSolid(const Model& model);
+
 // Readers of the mesh formats OCCT has no reader for.
 Mesh readOff(const std::string& path);
+// Throws BadInput naming the line of the first OBJ face with a vertex index out of range.
+void checkObjIndices(const std::string& path);
 
 }  // namespace sliceform
