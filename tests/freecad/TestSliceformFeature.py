@@ -166,6 +166,51 @@ class TestSliceformFeature(unittest.TestCase):
         self.doc.recompute()
         self.assertTrue(sliceform.isValid(), sliceform.getStatusString())
 
+    def test_bad_sources_and_parameters_table(self):
+        """Each row: a source and properties, and the message the error state must carry."""
+        from sliceform_app import feature
+
+        open_mesh = Mesh.createSphere(30, 24)
+        open_mesh.removeFacets([0])
+        two = Mesh.createSphere(30, 24)
+        far = Mesh.createSphere(30, 24)
+        far.translate(200, 0, 0)
+        two.addMesh(far)
+        rows = [
+            ("open mesh", lambda: self._mesh(open_mesh), {}, "not closed: 3 boundary edges in 1 hole"),
+            ("two solids", lambda: self._mesh(two), {}, "2 separate solids"),
+            ("a face", lambda: self._part(Part.makePlane(50, 50)), {}, "no closed solid"),
+            ("an open shell", lambda: self._part(Part.Shell(Part.makeBox(20, 20, 20).Faces[1:])), {}, "no closed solid"),
+            ("thickness 0", lambda: self._part(Part.makeSphere(40)), {"Thickness": 0}, "thickness must be > 0"),
+            ("one slice", lambda: self._part(Part.makeSphere(40)), {"Slices": 1}, "slices must be between"),
+            ("custom sheet too small", lambda: self._part(Part.makeSphere(40)),
+             {"SheetSize": "Custom", "SheetWidth": 40, "SheetHeight": 40}, "does not fit a 40x40 sheet"),
+        ]
+        for name, make, properties, message in rows:
+            source = make()
+            brep = source.Shape.exportBrepToString() if hasattr(source, "Shape") else None
+            sliceform = feature.makeSliceform(source, **dict({"Slices": 16}, **properties))
+            self.assertFalse(sliceform.isValid(), name)
+            self.assertIn(message, sliceform.getStatusString(), name)
+            self.assertTrue(source.isValid(), name)
+            if brep is not None:
+                self.assertEqual(source.Shape.exportBrepToString(), brep, name)
+        path = os.path.join(tempfile.mkdtemp(), "errors.FCStd")
+        self.doc.saveAs(path)  # the document stays saveable with features in error
+        self.assertGreater(os.path.getsize(path), 0)
+
+    def _mesh(self, mesh):
+        obj = self.doc.addObject("Mesh::Feature", "Mesh")
+        obj.Mesh = mesh
+        self.doc.recompute()
+        return obj
+
+    def _part(self, shape):
+        obj = self.doc.addObject("Part::Feature", "Shape")
+        obj.Shape = shape
+        self.doc.recompute()
+        return obj
+
     def test_missing_source_is_an_error(self):
         from sliceform_app import feature
 
