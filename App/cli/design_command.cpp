@@ -165,6 +165,9 @@ void runDesign(DesignOptions o) {
   const Vec3 size = model.bounds.size();
   std::printf("model      %s (%.1f x %.1f x %.1f mm, %zu triangles)\n", model.source.c_str(), size.x, size.y,
               size.z, model.mesh.triangles.size());
+  if (model.holesFilled > 0)
+    std::printf("repaired   %zu small hole(s) of the mesh filled (fans about their centres)\n",
+                model.holesFilled);
   std::printf("slices     %zu U, %zu V at %.3f / %.3f mm\n", a.u.slices.size(), a.v.slices.size(),
               a.u.interval, a.v.interval);
   std::printf("reeb       %zu U edges, %zu V edges\n", a.reebU.edges.size(), a.reebV.edges.size());

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "model/mesh.hpp"
+#include "model/model.hpp"
 #include "support/error.hpp"
 #include "test_support.hpp"
 
@@ -66,6 +67,26 @@ TEST(Mesh, HolesAreCountedSeparately) {
   EXPECT_EQ(topo.boundaryEdges, 6u);
   EXPECT_EQ(topo.holes, 2u);
   EXPECT_NE(topo.describe().find("2 holes"), std::string::npos) << topo.describe();
+}
+
+TEST(Mesh, SmallHolesAreFilledLargeOnesLeft) {
+  // A missing triangle of a 2 mm cube face: the hole is 2.8 mm across.
+  Mesh cube = cubeMesh(2);
+  cube.triangles.erase(cube.triangles.begin() + 5);
+  Mesh kept = cube;
+  EXPECT_EQ(fillSmallHoles(kept, 2.0), 0u);  // larger than allowed: left alone
+  EXPECT_EQ(kept.triangles.size(), cube.triangles.size());
+  EXPECT_EQ(fillSmallHoles(cube, 3.0), 1u);
+  EXPECT_TRUE(analyseTopology(cube).closed());
+  EXPECT_EQ(cube.triangles.size(), 11u + 3u);  // a fan of three about the hole's centre
+  // Two holes meeting at a vertex (a pinch): no fan is sure to be right, so none is added.
+  // An octahedron without two faces that share only its top vertex.
+  Mesh octahedron;
+  octahedron.vertices = {{0, 0, 1}, {1, 0, 0}, {0, 1, 0}, {-1, 0, 0}, {0, -1, 0}, {0, 0, -1}};
+  octahedron.triangles = {{0, 2, 3}, {0, 4, 1}, {5, 2, 1}, {5, 3, 2}, {5, 4, 3}, {5, 1, 4}};
+  ASSERT_EQ(analyseTopology(octahedron).boundaryEdges, 6u);
+  EXPECT_EQ(fillSmallHoles(octahedron, 10.0), 0u);
+  EXPECT_EQ(octahedron.triangles.size(), 6u);
 }
 
 TEST(Mesh, NonManifoldAndDegenerateTriangles) {

@@ -15,7 +15,6 @@
 #include <Poly_PolygonOnTriangulation.hxx>
 #include <Poly_Triangulation.hxx>
 #include <Precision.hxx>
-#include <RWObj.hxx>
 #include <RWStl.hxx>
 #include <STEPControl_Reader.hxx>
 #include <TopExp_Explorer.hxx>
@@ -26,9 +25,13 @@
 
 #include <boost/pending/disjoint_sets.hpp>
 
+#include <unistd.h>
+
 #include <algorithm>
 #include <cctype>
+#include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <map>
 
 #include "support/error.hpp"
@@ -87,14 +90,59 @@ TopoDS_Shape readCad(const std::string& path, const std::string& ext) {
   return transfer(reader, "IGES");
 }
 
+// A file that is removed when this goes out of scope.
+struct TemporaryFile {
+  std::string path;
+  ~TemporaryFile() {
+    if (!path.empty()) std::remove(path.c_str());
+  }
+};
+
+// OCCT 7.6's line reader (Standard_ReadLineBuffer) hands back the last line of a file that
+// does not end with a newline without a terminating NUL, and the ASCII STL reader then
+// compares and parses past the end of its buffer (heap-buffer-overflow, found by fuzzing).
+// Such a file is read from a temporary copy with a newline appended; the path to read is
+// returned. Binary STL, told apart as OCCT does (at least 134 bytes, one of the first 134
+// above '~'), is not read by lines and is read as it is.
+std::string stlForOcct(const std::string& path, TemporaryFile& copy) {
+  std::ifstream in(path, std::ios::binary);
+  char head[134];
+  const std::streamsize n = in.read(head, sizeof head).gcount();
+  if (n == sizeof head &&
+      std::any_of(head, head + n, [](char c) { return static_cast<unsigned char>(c) > '~'; }))
+    return path;
+  in.clear();
+  char last = '\n';
+  in.seekg(-1, std::ios::end).get(last);
+  if (last == '\n') return path;
+  std::error_code ec;
+  const fs::path folder = fs::temp_directory_path(ec);
+  std::string name = ((ec ? fs::path("/tmp") : folder) / "sliceform-XXXXXX.stl").string();
+  const int fd = ::mkstemps(name.data(), 4);  // created here, so no other file is overwritten
+  if (fd < 0) throw Error(ErrorKind::Io, "cannot create a temporary copy of " + path + " in " + name);
+  ::close(fd);
+  copy.path = name;
+  std::ofstream out(name, std::ios::binary);
+  in.clear();
+  in.seekg(0);
+  out << in.rdbuf() << '\n';
+  if (!out.flush()) throw Error(ErrorKind::Io, "cannot write a temporary copy of " + path + " to " + name);
+  return name;
+}
+
 Mesh readMeshFile(const std::string& path, const std::string& ext) {
   if (ext == ".off") return readOff(path);
-  if (ext == ".obj") checkObjIndices(path);
-  Handle(Poly_Triangulation) poly =
-      ext == ".stl" ? RWStl::ReadFile(path.c_str()) : RWObj::ReadFile(path.c_str());
-  if (poly.IsNull() || poly->NbTriangles() == 0)
+  Mesh mesh;
+  if (ext == ".obj") {
+    mesh = readObj(path);
+  } else {
+    TemporaryFile copy;
+    const Handle(Poly_Triangulation) poly = RWStl::ReadFile(stlForOcct(path, copy).c_str());
+    if (!poly.IsNull()) mesh = fromPoly(poly);
+  }
+  if (mesh.triangles.empty())
     throw Error(ErrorKind::BadInput, path + ": no triangles could be read from the file");
-  return fromPoly(poly);
+  return mesh;
 }
 
 // The solids of a shape; closed shells become solids, anything else is refused.
@@ -250,6 +298,7 @@ Model modelFromMesh(const Mesh& mesh, const std::string& source) {
   if (model.mesh.triangles.empty())
     throw Error(ErrorKind::BadInput, source + ": every triangle has zero area (repeated vertices)");
   model.bounds = model.mesh.bounds();
+  model.holesFilled = fillSmallHoles(model.mesh, kMaxFilledHoleSpan * model.bounds.diagonal());
   return model;
 }
 
@@ -287,7 +336,12 @@ Model scaledToHeight(const Model& model, Vec3 up, double height) {
 
 void requireClosed(const Model& model) {
   const MeshTopology topo = analyseTopology(model.mesh);
-  if (!topo.closed()) throw Error(ErrorKind::BadInput, model.source + ": " + topo.describe());
+  if (topo.closed()) return;
+  std::string message = model.source + ": " + topo.describe();
+  if (topo.boundaryEdges > 0 && topo.nonManifoldEdges == 0 && model.kind == SourceKind::Mesh)
+    message += "; holes up to " + std::to_string(static_cast<int>(kMaxFilledHoleSpan * 100)) +
+               " % of the model's size across are filled, these are larger";
+  throw Error(ErrorKind::BadInput, message);
 }
 
 std::vector<size_t> separateSolids(const Mesh& mesh) {

@@ -22,7 +22,12 @@ struct Model {
   Mesh mesh;                  // closed triangle mesh, welded
   Box3 bounds;                // of the shape (or mesh), mm
   double meshDeflection = 0;  // how far the triangulation may stray from the shape, mm
+  size_t holesFilled = 0;     // small holes of a mesh source closed on reading
 };
+
+// Holes of a mesh are filled when they are at most this share of the model's bounding-box
+// diagonal across; larger ones are refused by requireClosed.
+constexpr double kMaxFilledHoleSpan = 0.2;
 
 // Reads STEP, IGES, BREP, STL, OBJ or OFF (chosen by the file extension).
 Model readModel(const std::string& path);
@@ -48,7 +53,11 @@ void requireOneSolid(const Model& model);
 
 // Readers of the mesh formats OCCT has no reader for.
 Mesh readOff(const std::string& path);
-// Throws BadInput naming the line of the first OBJ face with a vertex index out of range.
-void checkObjIndices(const std::string& path);
+// Closes every hole at most maxSpan across with a fan of triangles about its centroid;
+// returns how many. A hole through a vertex shared with another hole (a pinch) is left.
+size_t fillSmallHoles(Mesh& mesh, double maxSpan);
+// Vertices and faces of an OBJ file (polygons fanned); throws BadInput naming the line of
+// the first statement it cannot read, such as a face with a vertex index out of range.
+Mesh readObj(const std::string& path);
 
 }  // namespace sliceform
