@@ -12,6 +12,7 @@
 #include <cmath>
 
 #include "layout/labels.hpp"
+#include "support/parallel.hpp"
 #include "pipeline/design.hpp"
 #include "support/occt_guard.hpp"
 
@@ -152,10 +153,13 @@ std::vector<Vec2> sample(const CutElement& e, double deflection) {
 
 std::vector<FlatPatch> flattenPatches(const Design& d) {
   const Arrangement& a = d.arrangement;
-  std::vector<FlatPatch> out;
-  for (int k = 0; k < static_cast<int>(d.patches.size()); ++k) {
+  // Patches are independent (OCCT on separate shapes, Clipper on separate paths): one per
+  // core, each written to its own slot, so the result does not depend on the schedule.
+  std::vector<FlatPatch> out(d.patches.size());
+  parallelFor(d.patches.size(), [&](size_t index) {
+    const int k = static_cast<int>(index);
     const PatchPlane plane = patchPlane(a, k);
-    FlatPatch flat;
+    FlatPatch& flat = out[index];
     flat.patch = k;
     flat.id = patchId(a.scaffold, k);
     flat.family = a.scaffold.patches[k].family;
@@ -166,8 +170,7 @@ std::vector<FlatPatch> flattenPatches(const Design& d) {
     const double partnerHeight = std::max(flat.name.height * 0.6, 1.0);
     flat.partners =
         placePartners(flat.outline, partnerSpots(d, k), {flat.name}, partnerHeight, flat.partnersMissing);
-    out.push_back(std::move(flat));
-  }
+  });
   return out;
 }
 
