@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "support/error.hpp"
+#include "support/parallel.hpp"
 
 namespace sliceform {
 
@@ -31,7 +32,9 @@ std::vector<std::pair<int, int>> partitionPatches(const std::vector<Region2d>& p
   // runs can never be part of an answer (infinite error).
   constexpr double kInf = std::numeric_limits<double>::infinity();
   std::vector<std::vector<double>> err(n, std::vector<double>(n, kInf));
-  for (int i = 0; i < n; ++i) {
+  // Rows are independent: one per core, each writing only its own row.
+  parallelFor(static_cast<size_t>(n), [&](size_t row) {
+    const int i = static_cast<int>(row);
     Region2d u = patches[i];
     double sumArea = 0;
     for (int j = i; j < n; ++j) {
@@ -40,7 +43,7 @@ std::vector<std::pair<int, int>> partitionPatches(const std::vector<Region2d>& p
       err[i][j] = ds * ((j - i + 1) * u.area() - sumArea);
       if (err[i][j] > budget) break;
     }
-  }
+  });
   // D[m][i]: least error of patches i..n-1 in m groups (eq. 2, suffix form); choice[m][i]
   // the end of the first group. Stop at the first m whose best error fits the budget.
   std::vector<std::vector<double>> best{std::vector<double>(n + 1, kInf)};
