@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 #include "assembly/fold.hpp"
 
+#include <BRepBuilderAPI_Copy.hxx>
+#include <BRepLib.hxx>
 #include <BRepTools.hxx>
 #include <BRep_Builder.hxx>
 #include <IFSelect_ReturnStatus.hxx>
@@ -9,11 +11,15 @@
 #include <Message_Messenger.hxx>
 #include <Message_Printer.hxx>
 #include <STEPControl_Writer.hxx>
+#include <TopExp_Explorer.hxx>
+#include <TopTools_ListOfShape.hxx>
+#include <TopoDS.hxx>
 #include <TopoDS_Compound.hxx>
 #include <gp_Ax1.hxx>
 
 #include <cmath>
 #include <mutex>
+#include <vector>
 
 #include "support/atomic_file.hpp"
 #include "support/error.hpp"
@@ -89,12 +95,21 @@ void writeShape(const TopoDS_Shape& shape, const std::string& path) {
           for (int i = 1; i <= printers.Length(); ++i) printers(i)->SetTraceLevel(levels[i - 1]);
         }
       } restore{printers, levels};
+      // Planar faces keep no 2D curves, and the writer projects every edge onto its plane
+      // again and again while it bounds the faces (23 s for rocker-arm's 26,000 edges). Stored
+      // once on a copy, they are looked up instead.
+      const TopoDS_Shape withCurves = BRepBuilderAPI_Copy(shape).Shape();
+      for (TopExp_Explorer f(withCurves, TopAbs_FACE); f.More(); f.Next()) {
+        TopTools_ListOfShape edges;
+        for (TopExp_Explorer e(f.Current(), TopAbs_EDGE); e.More(); e.Next()) edges.Append(e.Current());
+        BRepLib::BuildPCurveForEdgesOnPlane(edges, TopoDS::Face(f.Current()));
+      }
       STEPControl_Writer writer;
       Interface_Static::SetCVal("write.step.unit", "MM");
       // No 2D curves on the planes: readers rebuild them, and they doubled the file and the
       // time (a mesh's polygon patches have tens of thousands of edges).
       Interface_Static::SetIVal("write.surfacecurve.mode", 0);
-      if (writer.Transfer(shape, STEPControl_AsIs) != IFSelect_RetDone ||
+      if (writer.Transfer(withCurves, STEPControl_AsIs) != IFSelect_RetDone ||
           writer.Write(temporary.c_str()) != IFSelect_RetDone)
         throw Error(ErrorKind::Io, "cannot write " + path);
     });
