@@ -1,0 +1,106 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// Google Benchmark of the core stages (issue 7), in process so that start-up, reading and
+// file output do not blur them: the mesh slicer (2 x 128 slices), the exact OCCT slicer per
+// slice (issue target: <= 2 ms a slice), and runDesign end to end at 64 and 128 slices.
+// Models come from occt-misc (SLICEFORM_BENCH_MESH / SLICEFORM_BENCH_CAD override them) and
+// an OCCT-built bracket, all scaled to 150 mm like `sliceform design --size 150`.
+#include <BRepAlgoAPI_Cut.hxx>
+#include <BRepPrimAPI_MakeBox.hxx>
+#include <BRepPrimAPI_MakeCylinder.hxx>
+#include <benchmark/benchmark.h>
+
+#include <chrono>
+#include <cstdlib>
+#include <filesystem>
+#include <map>
+#include <string>
+
+#include "model/model.hpp"
+#include "pipeline/design.hpp"
+#include "slicing/brep_slicer.hpp"
+#include "slicing/mesh_slicer.hpp"
+
+namespace sf = sliceform;
+
+namespace {
+
+std::string path(const char* env, const char* fallback) {
+  const char* p = std::getenv(env);
+  return p ? p : fallback;
+}
+
+// Read once per process: reading is not a stage measured here.
+const sf::Model* model(const std::string& which) {
+  static std::map<std::string, sf::Model> cache;
+  auto it = cache.find(which);
+  if (it != cache.end()) return &it->second;
+  sf::Model m;
+  if (which == "bracket") {  // a plate with a through hole: planes, a cylinder, their seams
+    const TopoDS_Shape plate = BRepPrimAPI_MakeBox(60, 40, 20).Shape();
+    const TopoDS_Shape hole = BRepPrimAPI_MakeCylinder(gp_Ax2(gp_Pnt(30, 20, -1), gp_Dir(0, 0, 1)), 10, 22).Shape();
+    m = sf::modelFromShape(BRepAlgoAPI_Cut(plate, hole).Shape(), "bracket");
+  } else {
+    if (!std::filesystem::exists(which)) return nullptr;
+    m = sf::readModel(which);
+  }
+  return &cache.emplace(which, sf::scaledToSize(m, 150)).first->second;
+}
+
+const std::string kMesh = path("SLICEFORM_BENCH_MESH", "/usr/share/opencascade/data/stl/sh1.stl");
+const std::string kCad = path("SLICEFORM_BENCH_CAD", "/usr/share/opencascade/data/step/screw.step");
+
+// Both families, as the pipeline cuts them: U = X, V = Y, W = Z up.
+const sf::SliceFrame kFrames[2] = {sf::makeSliceFrame({1, 0, 0}, {0, 0, 1}), sf::makeSliceFrame({0, 1, 0}, {0, 0, 1})};
+
+void BM_sliceMesh(benchmark::State& state) {
+  const sf::Model* m = model(kMesh);
+  if (!m) return state.SkipWithError(("missing " + kMesh).c_str());
+  const int n = static_cast<int>(state.range(0));
+  for (auto _ : state)
+    for (const sf::SliceFrame& f : kFrames)
+      benchmark::DoNotOptimize(sf::sliceMesh(m->mesh, f, sf::slicePositions(m->mesh, f, n)));
+  state.SetLabel(std::to_string(m->mesh.triangles.size()) + " triangles");
+}
+
+// ms per slice is the figure the issue sets a target for; counted over both families.
+void sliceBrepBench(benchmark::State& state, const std::string& which) {
+  const sf::Model* m = model(which);
+  if (!m) return state.SkipWithError(("missing " + which).c_str());
+  const int n = static_cast<int>(state.range(0));
+  double ms = 0;
+  for (auto _ : state) {
+    const auto start = std::chrono::steady_clock::now();
+    for (const sf::SliceFrame& f : kFrames)
+      benchmark::DoNotOptimize(
+          sf::sliceBrep(m->shape, f, sf::slicePositions(m->mesh, f, n), sf::exactDeflection(m->meshDeflection)));
+    ms += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  }
+  state.counters["ms_per_slice"] = ms / (static_cast<double>(state.iterations()) * 2 * n);
+}
+void BM_sliceBrep_cad(benchmark::State& state) { sliceBrepBench(state, kCad); }
+void BM_sliceBrep_bracket(benchmark::State& state) { sliceBrepBench(state, "bracket"); }
+
+void designBench(benchmark::State& state, const std::string& which) {
+  const sf::Model* m = model(which);
+  if (!m) return state.SkipWithError(("missing " + which).c_str());
+  sf::DesignParams params;
+  params.arrangement.slices = static_cast<int>(state.range(0));
+  for (auto _ : state) benchmark::DoNotOptimize(sf::runDesign(*m, params));
+}
+void BM_runDesign_mesh(benchmark::State& state) { designBench(state, kMesh); }
+void BM_runDesign_cad(benchmark::State& state) { designBench(state, kCad); }
+
+}  // namespace
+
+// Wall time: the slicers and the pipeline use every core. The slow ones run a fixed three
+// times (median reported) instead of Google Benchmark's calibrated count.
+BENCHMARK(BM_sliceMesh)->Arg(128)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_sliceBrep_cad)->Arg(128)->Unit(benchmark::kMillisecond)->UseRealTime()
+    ->Iterations(1)->Repetitions(3)->ReportAggregatesOnly(true);
+BENCHMARK(BM_sliceBrep_bracket)->Arg(128)->Unit(benchmark::kMillisecond)->UseRealTime()
+    ->Iterations(1)->Repetitions(3)->ReportAggregatesOnly(true);
+BENCHMARK(BM_runDesign_mesh)->Arg(64)->Arg(128)->Unit(benchmark::kMillisecond)->UseRealTime()
+    ->Iterations(1)->Repetitions(3)->ReportAggregatesOnly(true);
+BENCHMARK(BM_runDesign_cad)->Arg(64)->Arg(128)->Unit(benchmark::kMillisecond)->UseRealTime()
+    ->Iterations(1)->Repetitions(3)->ReportAggregatesOnly(true);
+BENCHMARK_MAIN();
