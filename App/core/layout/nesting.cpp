@@ -104,6 +104,9 @@ Packing nestOnSheets(const std::vector<Region2d>& outlines, const std::vector<st
   config.placer_config.starting_point = NfpPlacer::Config::Alignment::BOTTOM_LEFT;
   // One thread: the result must not depend on which thread finishes first.
   config.placer_config.parallel = false;
+  // Fewer candidate positions per item than libnest2d's 0.65: the same sheet counts on
+  // spot, rocker-arm, bunny-lowres and fandisk, in 60-90 % of the time.
+  config.placer_config.accuracy = 0.3f;
   // libnest2d grows every item by half the spacing, the bin too: widen the bin by as much
   // so the paper keeps exactly `margin` from the sheet's edges.
   const double edge = sheet.margin - sheet.spacing / 2;
