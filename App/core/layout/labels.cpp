@@ -165,11 +165,19 @@ Region2d freeFor(const Region2d& paper, const std::vector<Label>& taken, Vec2 ha
   }
   Region2d room = erodeByBox(erode(near, kEdgeMargin), half.x, half.y);
   if (window) room = room.intersect(*window);
+  // Labels already set keep their distance: one subtraction of the boxes that reach the
+  // room at all, not one per label (a patch can carry dozens).
+  if (room.empty() || taken.empty()) return room;
+  const Box2 b = room.bounds();
+  std::vector<Region2d::Loop> boxes;
   for (const Label& l : taken) {
     const Vec2 other = halfSize(l.text, l.height, l.vertical);
-    room = room.subtract(rect(l.at, other.x + half.x + kGap, other.y + half.y + kGap));
+    const double hx = other.x + half.x + kGap, hy = other.y + half.y + kGap;
+    if (l.at.x + hx < b.min.x || l.at.x - hx > b.max.x || l.at.y + hy < b.min.y || l.at.y - hy > b.max.y) continue;
+    boxes.push_back({{l.at.x - hx, l.at.y - hy}, {l.at.x + hx, l.at.y - hy}, {l.at.x + hx, l.at.y + hy},
+                     {l.at.x - hx, l.at.y + hy}});
   }
-  return room;
+  return boxes.empty() ? room : room.subtract(Region2d::fromLoops(boxes, FillRule::NonZero));
 }
 
 }  // namespace
