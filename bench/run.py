@@ -199,6 +199,7 @@ def main():
     ap.add_argument("--no-scaling", action="store_true")
     ap.add_argument("--smoke", action="store_true", help="one icosphere run at 32 slices; exit 1 on a failure")
     a = ap.parse_args()
+    a.models = [os.path.abspath(m) for m in a.models]  # the runs start in a temporary folder
     os.makedirs(a.out, exist_ok=True)
     tmp = tempfile.mkdtemp(prefix="sliceform-bench-")
     # Run a copy: a rebuild of build/ by someone else during the run must not break it.
