@@ -54,7 +54,7 @@ MOVED = [(x + 200, y, z) for x, y, z in SV]
 # (name, file name, content, options, exit code, stderr pattern; None = success)
 ROWS = [
     ("empty file", "empty.stl", b"", [], 3, r"the file is empty"),
-    ("binary junk", "junk.stl", bytes(range(256)) * 20, [], 3, r"junk\.stl: .*(NaN|no triangles|not closed)"),
+    ("binary junk", "junk.stl", bytes(range(256)) * 20, [], 3, r"junk\.stl: .*(NaN|no triangles|not an STL)"),
     ("truncated STL", "truncated.stl", stl_binary(TET_V, TET_F)[:120], [], 3, r"no triangles could be read"),
     ("unknown format", "model.xyz", b"1 2 3\n", [], 3, r'unknown format "\.xyz"'),
     ("no such file", None, None, [], 2, r"File does not exist: .*missing\.stl"),
