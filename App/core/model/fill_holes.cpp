@@ -45,10 +45,11 @@ size_t fillSmallHoles(Mesh& mesh, double maxSpan) {
       current = following;
     }
     if (!simple) continue;
-    double span = 0;
-    for (uint32_t a : loop)
-      for (uint32_t b : loop) span = std::max(span, norm(mesh.vertices[a] - mesh.vertices[b]));
-    if (loop.size() < 3 || span > maxSpan) continue;
+    // Across: the diagonal of the hole's bounding box (linear in its size; a pairwise
+    // maximum would be quadratic on a scan with a hole of 100,000 edges).
+    Box3 box;
+    for (uint32_t v : loop) box.add(mesh.vertices[v]);
+    if (loop.size() < 3 || box.diagonal() > maxSpan) continue;
     Vec3 centre{0, 0, 0};
     for (uint32_t v : loop) centre = centre + mesh.vertices[v] * (1.0 / loop.size());
     const auto c = static_cast<uint32_t>(mesh.vertices.size());

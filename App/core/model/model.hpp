@@ -53,7 +53,7 @@ void requireOneSolid(const Model& model);
 
 // Readers of the mesh formats OCCT has no reader for.
 Mesh readOff(const std::string& path);
-// Closes every hole at most maxSpan across with a fan of triangles about its centroid;
+// Closes every hole at most maxSpan across (its bounding-box diagonal) with a fan of triangles about its centroid;
 // returns how many. A hole through a vertex shared with another hole (a pinch) is left.
 size_t fillSmallHoles(Mesh& mesh, double maxSpan);
 // Vertices and faces of an OBJ file (polygons fanned); throws BadInput naming the line of
