@@ -37,15 +37,22 @@ def _remove(doc, obj):
             _remove(doc, child)
 
 
+def _group(feature, prop, suffix, what):
+    """The feature's group held in property `prop`, made if missing."""
+    doc = feature.Document
+    group = getattr(feature, prop)
+    if group is None or group.Document != doc:
+        group = doc.addObject("App::DocumentObjectGroup", feature.Name + suffix)
+        setattr(feature, prop, group)
+    group.Label = "{} {}".format(feature.Label, what)
+    group.purgeTouched()
+    return group
+
+
 def update_sketches(feature, patches):
     """One Sketcher::SketchObject per patch on its plane: the exact outline and slots."""
     doc = feature.Document
-    group = feature.PatchGroup
-    if group is None or group.Document != doc:
-        group = doc.addObject("App::DocumentObjectGroup", feature.Name + "_Patches")
-        feature.PatchGroup = group
-    group.Label = "{} patches".format(feature.Label)
-    group.purgeTouched()
+    group = _group(feature, "PatchGroup", "_Patches", "patches")
 
     def make(i):
         sketch = doc.addObject("Sketcher::SketchObject", "{}_Patch{:03d}".format(feature.Name, i))
@@ -96,13 +103,7 @@ def _make_page(doc, feature, i):
 
 
 def _sheet_group(feature):
-    doc = feature.Document
-    group = feature.SheetGroup
-    if group is None or group.Document != doc:
-        group = doc.addObject("App::DocumentObjectGroup", feature.Name + "_SheetShapes")
-        feature.SheetGroup = group
-    group.Label = "{} sheet geometry".format(feature.Label)
-    return group
+    return _group(feature, "SheetGroup", "_SheetShapes", "sheet geometry")
 
 
 def _update_views(feature, page, patches):
