@@ -4,10 +4,10 @@
 // slice (issue target: <= 2 ms a slice), and runDesign end to end at 64 and 128 slices.
 // Models come from occt-misc (SLICEFORM_BENCH_MESH / SLICEFORM_BENCH_CAD override them) and
 // an OCCT-built bracket, all scaled to 150 mm like `sliceform design --size 150`.
+#include <benchmark/benchmark.h>
 #include <BRepAlgoAPI_Cut.hxx>
 #include <BRepPrimAPI_MakeBox.hxx>
 #include <BRepPrimAPI_MakeCylinder.hxx>
-#include <benchmark/benchmark.h>
 
 #include <chrono>
 #include <cstdlib>
@@ -37,7 +37,8 @@ const sf::Model* model(const std::string& which) {
   sf::Model m;
   if (which == "bracket") {  // a plate with a through hole: planes, a cylinder, their seams
     const TopoDS_Shape plate = BRepPrimAPI_MakeBox(60, 40, 20).Shape();
-    const TopoDS_Shape hole = BRepPrimAPI_MakeCylinder(gp_Ax2(gp_Pnt(30, 20, -1), gp_Dir(0, 0, 1)), 10, 22).Shape();
+    const TopoDS_Shape hole =
+        BRepPrimAPI_MakeCylinder(gp_Ax2(gp_Pnt(30, 20, -1), gp_Dir(0, 0, 1)), 10, 22).Shape();
     m = sf::modelFromShape(BRepAlgoAPI_Cut(plate, hole).Shape(), "bracket");
   } else {
     if (!std::filesystem::exists(which)) return nullptr;
@@ -50,7 +51,8 @@ const std::string kMesh = path("SLICEFORM_BENCH_MESH", "/usr/share/opencascade/d
 const std::string kCad = path("SLICEFORM_BENCH_CAD", "/usr/share/opencascade/data/step/screw.step");
 
 // Both families, as the pipeline cuts them: U = X, V = Y, W = Z up.
-const sf::SliceFrame kFrames[2] = {sf::makeSliceFrame({1, 0, 0}, {0, 0, 1}), sf::makeSliceFrame({0, 1, 0}, {0, 0, 1})};
+const sf::SliceFrame kFrames[2] = {sf::makeSliceFrame({1, 0, 0}, {0, 0, 1}),
+                                   sf::makeSliceFrame({0, 1, 0}, {0, 0, 1})};
 
 void BM_sliceMesh(benchmark::State& state) {
   const sf::Model* m = model(kMesh);
@@ -71,14 +73,18 @@ void sliceBrepBench(benchmark::State& state, const std::string& which) {
   for (auto _ : state) {
     const auto start = std::chrono::steady_clock::now();
     for (const sf::SliceFrame& f : kFrames)
-      benchmark::DoNotOptimize(
-          sf::sliceBrep(m->shape, f, sf::slicePositions(m->mesh, f, n), sf::exactDeflection(m->meshDeflection)));
+      benchmark::DoNotOptimize(sf::sliceBrep(m->shape, f, sf::slicePositions(m->mesh, f, n),
+                                             sf::exactDeflection(m->meshDeflection)));
     ms += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   }
   state.counters["ms_per_slice"] = ms / (static_cast<double>(state.iterations()) * 2 * n);
 }
-void BM_sliceBrep_cad(benchmark::State& state) { sliceBrepBench(state, kCad); }
-void BM_sliceBrep_bracket(benchmark::State& state) { sliceBrepBench(state, "bracket"); }
+void BM_sliceBrep_cad(benchmark::State& state) {
+  sliceBrepBench(state, kCad);
+}
+void BM_sliceBrep_bracket(benchmark::State& state) {
+  sliceBrepBench(state, "bracket");
+}
 
 void designBench(benchmark::State& state, const std::string& which) {
   const sf::Model* m = model(which);
@@ -87,20 +93,46 @@ void designBench(benchmark::State& state, const std::string& which) {
   params.arrangement.slices = static_cast<int>(state.range(0));
   for (auto _ : state) benchmark::DoNotOptimize(sf::runDesign(*m, params));
 }
-void BM_runDesign_mesh(benchmark::State& state) { designBench(state, kMesh); }
-void BM_runDesign_cad(benchmark::State& state) { designBench(state, kCad); }
+void BM_runDesign_mesh(benchmark::State& state) {
+  designBench(state, kMesh);
+}
+void BM_runDesign_cad(benchmark::State& state) {
+  designBench(state, kCad);
+}
 
 }  // namespace
 
 // Wall time: the slicers and the pipeline use every core. The slow ones run a fixed three
 // times (median reported) instead of Google Benchmark's calibrated count.
 BENCHMARK(BM_sliceMesh)->Arg(128)->Unit(benchmark::kMillisecond)->UseRealTime();
-BENCHMARK(BM_sliceBrep_cad)->Arg(128)->Unit(benchmark::kMillisecond)->UseRealTime()
-    ->Iterations(1)->Repetitions(3)->ReportAggregatesOnly(true);
-BENCHMARK(BM_sliceBrep_bracket)->Arg(128)->Unit(benchmark::kMillisecond)->UseRealTime()
-    ->Iterations(1)->Repetitions(3)->ReportAggregatesOnly(true);
-BENCHMARK(BM_runDesign_mesh)->Arg(64)->Arg(128)->Unit(benchmark::kMillisecond)->UseRealTime()
-    ->Iterations(1)->Repetitions(3)->ReportAggregatesOnly(true);
-BENCHMARK(BM_runDesign_cad)->Arg(64)->Arg(128)->Unit(benchmark::kMillisecond)->UseRealTime()
-    ->Iterations(1)->Repetitions(3)->ReportAggregatesOnly(true);
+BENCHMARK(BM_sliceBrep_cad)
+    ->Arg(128)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime()
+    ->Iterations(1)
+    ->Repetitions(3)
+    ->ReportAggregatesOnly(true);
+BENCHMARK(BM_sliceBrep_bracket)
+    ->Arg(128)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime()
+    ->Iterations(1)
+    ->Repetitions(3)
+    ->ReportAggregatesOnly(true);
+BENCHMARK(BM_runDesign_mesh)
+    ->Arg(64)
+    ->Arg(128)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime()
+    ->Iterations(1)
+    ->Repetitions(3)
+    ->ReportAggregatesOnly(true);
+BENCHMARK(BM_runDesign_cad)
+    ->Arg(64)
+    ->Arg(128)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime()
+    ->Iterations(1)
+    ->Repetitions(3)
+    ->ReportAggregatesOnly(true);
 BENCHMARK_MAIN();

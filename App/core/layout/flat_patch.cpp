@@ -12,9 +12,9 @@
 #include <cmath>
 
 #include "layout/labels.hpp"
-#include "support/parallel.hpp"
 #include "pipeline/design.hpp"
 #include "support/occt_guard.hpp"
+#include "support/parallel.hpp"
 
 namespace sliceform {
 namespace {

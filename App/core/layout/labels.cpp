@@ -173,8 +173,11 @@ Region2d freeFor(const Region2d& paper, const std::vector<Label>& taken, Vec2 ha
   for (const Label& l : taken) {
     const Vec2 other = halfSize(l.text, l.height, l.vertical);
     const double hx = other.x + half.x + kGap, hy = other.y + half.y + kGap;
-    if (l.at.x + hx < b.min.x || l.at.x - hx > b.max.x || l.at.y + hy < b.min.y || l.at.y - hy > b.max.y) continue;
-    boxes.push_back({{l.at.x - hx, l.at.y - hy}, {l.at.x + hx, l.at.y - hy}, {l.at.x + hx, l.at.y + hy},
+    if (l.at.x + hx < b.min.x || l.at.x - hx > b.max.x || l.at.y + hy < b.min.y || l.at.y - hy > b.max.y)
+      continue;
+    boxes.push_back({{l.at.x - hx, l.at.y - hy},
+                     {l.at.x + hx, l.at.y - hy},
+                     {l.at.x + hx, l.at.y + hy},
                      {l.at.x - hx, l.at.y + hy}});
   }
   return boxes.empty() ? room : room.subtract(Region2d::fromLoops(boxes, FillRule::NonZero));

@@ -53,8 +53,8 @@ void requireOneSolid(const Model& model);
 
 // Readers of the mesh formats OCCT has no reader for.
 Mesh readOff(const std::string& path);
-// Closes every hole at most maxSpan across (its bounding-box diagonal) with a fan of triangles about its centroid;
-// returns how many. A hole through a vertex shared with another hole (a pinch) is left.
+// Closes every hole at most maxSpan across (its bounding-box diagonal) with a fan of triangles about its
+// centroid; returns how many. A hole through a vertex shared with another hole (a pinch) is left.
 size_t fillSmallHoles(Mesh& mesh, double maxSpan);
 // Vertices and faces of an OBJ file (polygons fanned); throws BadInput naming the line of
 // the first statement it cannot read, such as a face with a vertex index out of range.
