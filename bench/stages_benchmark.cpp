@@ -105,34 +105,12 @@ void BM_runDesign_cad(benchmark::State& state) {
 // Wall time: the slicers and the pipeline use every core. The slow ones run a fixed three
 // times (median reported) instead of Google Benchmark's calibrated count.
 BENCHMARK(BM_sliceMesh)->Arg(128)->Unit(benchmark::kMillisecond)->UseRealTime();
-BENCHMARK(BM_sliceBrep_cad)
-    ->Arg(128)
-    ->Unit(benchmark::kMillisecond)
-    ->UseRealTime()
-    ->Iterations(1)
-    ->Repetitions(3)
-    ->ReportAggregatesOnly(true);
-BENCHMARK(BM_sliceBrep_bracket)
-    ->Arg(128)
-    ->Unit(benchmark::kMillisecond)
-    ->UseRealTime()
-    ->Iterations(1)
-    ->Repetitions(3)
-    ->ReportAggregatesOnly(true);
-BENCHMARK(BM_runDesign_mesh)
-    ->Arg(64)
-    ->Arg(128)
-    ->Unit(benchmark::kMillisecond)
-    ->UseRealTime()
-    ->Iterations(1)
-    ->Repetitions(3)
-    ->ReportAggregatesOnly(true);
-BENCHMARK(BM_runDesign_cad)
-    ->Arg(64)
-    ->Arg(128)
-    ->Unit(benchmark::kMillisecond)
-    ->UseRealTime()
-    ->Iterations(1)
-    ->Repetitions(3)
-    ->ReportAggregatesOnly(true);
+// Whole-stage runs take seconds: one iteration each, three repetitions, their median.
+void slow(benchmark::internal::Benchmark* b) {
+  b->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(1)->Repetitions(3)->ReportAggregatesOnly(true);
+}
+BENCHMARK(BM_sliceBrep_cad)->Arg(128)->Apply(slow);
+BENCHMARK(BM_sliceBrep_bracket)->Arg(128)->Apply(slow);
+BENCHMARK(BM_runDesign_mesh)->Arg(64)->Arg(128)->Apply(slow);
+BENCHMARK(BM_runDesign_cad)->Arg(64)->Arg(128)->Apply(slow);
 BENCHMARK_MAIN();
