@@ -45,8 +45,8 @@ def markdown(r):
         out.append("%s is open, but its holes are small: `design` fills them, so it is benchmarked.  " % name(path))
     models = [p for p in r["models"] if r["models"][p]["stages_s"]]
     if models:
-        out += ["", "Median time per stage, ms (read: launch to report.json minus the stages; export: "
-                "after report.json, split into the sheets and the 3D assembly):", "",
+        out += ["", "Median time per stage, ms, as timings.json gives it (read: reading and scaling the "
+                "model; export X: writing file X; start + exit: the rest of the wall time):", "",
                 "| stage | " + " | ".join(name(p) for p in models) + " |",
                 "|---|" + "---:|" * len(models)]
         stages = list(r["models"][models[0]]["stages_s"])

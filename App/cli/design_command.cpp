@@ -19,6 +19,7 @@
 #include "output/design_files.hpp"
 #include "pipeline/design.hpp"
 #include "support/error.hpp"
+#include "support/stopwatch.hpp"
 
 namespace sliceform::cli {
 namespace {
@@ -88,8 +89,9 @@ void printRealization(const Design& d, const DesignParams& params) {
   std::printf("\n");
 }
 
-void writeOutputs(const Model& model, const DesignParams& params, const Design& d, const DesignOptions& o) {
-  const DesignFiles files = writeDesignFiles(model, params, d, o.output, o.foldAngle);
+void writeOutputs(const Model& model, const DesignParams& params, const Design& d, const DesignOptions& o,
+                  const std::vector<StageTime>& before) {
+  const DesignFiles files = writeDesignFiles(model, params, d, o.output, o.foldAngle, before);
   for (const std::string& name : files.removed)
     std::printf("removed    %s/%s, left by an earlier run with more sheets\n", o.output.c_str(),
                 name.c_str());
@@ -143,7 +145,10 @@ Model sized(Model model, const DesignOptions& o) {
 void runDesign(DesignOptions o) {
   if (!(o.foldAngle > 0 && o.foldAngle <= 90))
     throw Error(ErrorKind::BadParameter, "the fold angle must be in (0, 90] degrees");
+  std::vector<StageTime> readTime;
+  Stopwatch clock(readTime);
   const Model model = sized(readModel(o.model), o);
+  clock.lap("read");
   ArrangementParams& p = o.params.arrangement;
   p.u = o.uDirection();
   p.v = o.vDirection();
@@ -204,7 +209,7 @@ void runDesign(DesignOptions o) {
           "scaffold by hinges that hold\n",
           big, f == Family::U ? "U" : "V");
   }
-  if (!o.output.empty()) writeOutputs(model, o.params, d, o);
+  if (!o.output.empty()) writeOutputs(model, o.params, d, o, readTime);
   // Never hand on a design that cannot be built silently: the files are written so the
   // problem can be looked at, and the exit code says it failed.
   if (!a.certificate.stable)

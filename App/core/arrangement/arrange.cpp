@@ -1,12 +1,12 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 #include "arrangement/arrange.hpp"
 
-#include <chrono>
 #include <cmath>
 #include <sstream>
 
 #include "slicing/mesh_slicer.hpp"
 #include "support/error.hpp"
+#include "support/stopwatch.hpp"
 
 namespace sliceform {
 namespace {
@@ -41,20 +41,6 @@ std::string mm(double value) {
   out << value;
   return out.str();
 }
-
-class Stopwatch {
- public:
-  explicit Stopwatch(std::vector<StageTime>& out) : out_(out) {}
-  void lap(const char* stage) {
-    const auto now = std::chrono::steady_clock::now();
-    out_.push_back({stage, std::chrono::duration<double, std::milli>(now - last_).count()});
-    last_ = now;
-  }
-
- private:
-  std::vector<StageTime>& out_;
-  std::chrono::steady_clock::time_point last_ = std::chrono::steady_clock::now();
-};
 
 }  // namespace
 

@@ -14,6 +14,7 @@
 #include "model/model.hpp"
 #include "quality/quality.hpp"
 #include "reeb/reeb_graph.hpp"
+#include "support/stopwatch.hpp"
 #include "verify/certificate.hpp"
 
 namespace sliceform {
@@ -26,11 +27,6 @@ struct ArrangementParams {
   double tauM = 0.03;           // Reeb branch merging threshold (weight ratio)
   HingeRules hinges;
   StabilizeOptions stabilize;
-};
-
-struct StageTime {
-  std::string stage;
-  double ms = 0;
 };
 
 struct Arrangement {

@@ -10,6 +10,7 @@
 #include "output/sheet_dxf.hpp"
 #include "output/sheets_cairo.hpp"
 #include "support/error.hpp"
+#include "support/stopwatch.hpp"
 
 namespace sliceform {
 
@@ -18,7 +19,8 @@ std::string sheetFileName(int sheet, const char* extension) {
 }
 
 DesignFiles writeDesignFiles(const Model& model, const DesignParams& params, const Design& d,
-                             const std::string& folder, double foldAngle) {
+                             const std::string& folder, double foldAngle,
+                             const std::vector<StageTime>& before) {
   namespace fs = std::filesystem;
   std::error_code failed;
   fs::create_directories(folder, failed);
@@ -29,11 +31,17 @@ DesignFiles writeDesignFiles(const Model& model, const DesignParams& params, con
     files.written.push_back(name);
     return (dir / name).string();
   };
+  // timings.json goes last so it can hold what writing the others cost.
+  std::vector<StageTime> timings = before;
+  timings.insert(timings.end(), d.timings.begin(), d.timings.end());
+  Stopwatch clock(timings);
   writeJson(reportJson(model, params, d), path("report.json"));
-  writeJson(timingsJson(d), path("timings.json"));
+  clock.lap("export report");
   const std::vector<SheetDrawing> sheets = sheetDrawings(d.layout);
   writeSheetsPdf(sheets, d.layout.sheet, path("sheets.pdf"));
+  clock.lap("export PDF");
   writeSheetsPng(sheets, d.layout.sheet, path("sheets.png"));
+  clock.lap("export sheets PNG");
   for (size_t k = 0; k < sheets.size(); ++k) {
     writeSheetSvg(sheets[k], d.layout.sheet, path(sheetFileName(static_cast<int>(k), ".svg")));
     writeSheetDxf(sheets[k], d.layout.sheet, path(sheetFileName(static_cast<int>(k), ".dxf")));
@@ -47,11 +55,18 @@ DesignFiles writeDesignFiles(const Model& model, const DesignParams& params, con
         throw Error(ErrorKind::Io, "cannot remove the stale " + stale.string() + ": " + failed.message());
       files.removed.push_back(stale.filename().string());
     }
+  clock.lap("export SVG + DXF");
   const TopoDS_Shape assembly = assemble(d.arrangement, d.patches, foldAngle);
+  clock.lap("export fold");
   writeShape(assembly, path("assembly.step"));
+  clock.lap("export STEP");
   writeShape(assembly, path("assembly.brep"));
+  clock.lap("export BREP");
   writeGltf(assembly, path("assembly.glb"), assemblyFamilies(d.arrangement, d.patches));
+  clock.lap("export glTF");
   writeAssemblyPng(assemblyPanels(d.arrangement, d.patches, foldAngle), path("assembly.png"));
+  clock.lap("export assembly PNG");
+  writeJson(timingsJson(timings), path("timings.json"));
   return files;
 }
 

@@ -19,9 +19,12 @@ struct DesignFiles {
 
 // Each file goes to a temporary name first and is renamed, so a failure leaves the earlier
 // file whole. Sheet files beyond this design's sheet count (sheet-N.svg/.dxf only) are
-// removed so a stale sheet is never cut by mistake. Throws Io.
+// removed so a stale sheet is never cut by mistake. timings.json, written last, holds
+// `before` (the caller's own stages, such as reading the model), the design's stages and
+// what writing each file cost ("export ..."). Throws Io.
 DesignFiles writeDesignFiles(const Model& model, const DesignParams& params, const Design& design,
-                             const std::string& folder, double foldAngleDegrees);
+                             const std::string& folder, double foldAngleDegrees,
+                             const std::vector<StageTime>& before = {});
 
 // "sheet-3.dxf" for sheet index 2.
 std::string sheetFileName(int sheet, const char* extension);

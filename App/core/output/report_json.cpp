@@ -158,10 +158,10 @@ json reportJson(const Model& model, const DesignParams& params, const Design& d)
   return doc;
 }
 
-json timingsJson(const Design& d) {
+json timingsJson(const std::vector<StageTime>& timings) {
   json out = json::object();
   double total = 0;
-  for (const StageTime& t : d.timings) {
+  for (const StageTime& t : timings) {
     out[t.stage] = t.ms;
     total += t.ms;
   }

@@ -16,7 +16,7 @@
 namespace sliceform {
 
 nlohmann::json reportJson(const Model& model, const DesignParams& params, const Design& design);
-nlohmann::json timingsJson(const Design& design);
+nlohmann::json timingsJson(const std::vector<StageTime>& timings);
 void writeJson(const nlohmann::json& doc, const std::string& path);
 
 }  // namespace sliceform
