@@ -21,7 +21,9 @@ struct DesignFiles {
 // file whole. Sheet files beyond this design's sheet count (sheet-N.svg/.dxf only) are
 // removed so a stale sheet is never cut by mistake. timings.json, written last, holds
 // `before` (the caller's own stages, such as reading the model), the design's stages and
-// what writing each file cost ("export ..."). Throws Io.
+// what writing each file cost ("export ..."); the STEP file is written on a second thread,
+// so "export STEP, in parallel" is its own time and "export STEP, waiting for it" what it
+// added to the run (the others add up to the wall time). Throws Io.
 DesignFiles writeDesignFiles(const Model& model, const DesignParams& params, const Design& design,
                              const std::string& folder, double foldAngleDegrees,
                              const std::vector<StageTime>& before = {});

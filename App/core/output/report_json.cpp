@@ -163,7 +163,7 @@ json timingsJson(const std::vector<StageTime>& timings) {
   double total = 0;
   for (const StageTime& t : timings) {
     out[t.stage] = t.ms;
-    total += t.ms;
+    if (!t.alongside) total += t.ms;
   }
   out["total"] = total;
   return out;

@@ -12,6 +12,7 @@ namespace sliceform {
 struct StageTime {
   std::string stage;
   double ms = 0;
+  bool alongside = false;  // ran on another thread beside the others: not part of the total
 };
 
 class Stopwatch {
