@@ -122,6 +122,26 @@ TEST(ExactPatches, PolygonFacesOfAMesh) {
   EXPECT_EQ(wires, 2);
 }
 
+// Only sections that add to a cylinder's union are fused: nested and repeated ones are left
+// out, shifted ones kept, and the union of those kept is the union of all.
+TEST(ExactPatches, OnlySectionsThatAddToTheUnionAreFused) {
+  auto square = [](double x, double y, double side) {
+    return Region2d::fromLoops({{{x, y}, {x + side, y}, {x + side, y + side}, {x, y + side}}});
+  };
+  const std::vector<Region2d> sections{square(0, 0, 10),     square(1, 1, 8),  square(0, 0, 10),
+                                       square(0, 0, 10.001), square(5, 0, 10), square(2, 2, 3)};
+  const std::vector<size_t> kept = sectionsAddingToUnion(sections, 0.01);
+  // The largest (10.001) first, then the one shifted by 5; 10 and its copy lie within 0.01
+  // of the largest, 8 and 3 inside it.
+  EXPECT_EQ(kept, (std::vector<size_t>{3, 4}));
+  std::vector<Region2d> taken;
+  for (size_t k : kept) taken.push_back(sections[k]);
+  EXPECT_NEAR(Region2d::uniteAll(taken).area(), Region2d::uniteAll(sections).area(), 0.05);
+  EXPECT_TRUE(sectionsAddingToUnion({}, 0.01).empty());
+  // With no tolerance, the 10 mm squares are still inside the 10.001 mm one.
+  EXPECT_EQ(sectionsAddingToUnion(sections, 0).size(), 2u);
+}
+
 TEST(ExactPatches, KerfMovesCutPathsAwayFromThePaper) {
   const Region2d square =
       Region2d::fromLoops({{{0, 0}, {40, 0}, {40, 40}, {0, 40}}, {{10, 10}, {10, 30}, {30, 30}, {30, 10}}});

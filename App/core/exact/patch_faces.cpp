@@ -128,7 +128,8 @@ TopoDS_Shape exactSection(const Cylinder& cylinder, const std::map<int, ExactSli
   const double deflection = exactDeflection(meshDeflection);
   // The cylinder's own faces: a slice may hold pieces of other parts of the model.
   const Region2d near = cylinder.section.offset(std::max(4 * meshDeflection, 0.05));
-  std::vector<TopoDS_Shape> own;
+  std::vector<TopoDS_Shape> candidates;
+  std::vector<Region2d> polygons;
   for (int k = cylinder.firstSlice; k <= cylinder.lastSlice; ++k) {
     const ExactSlice& s = slices.at(k);
     if (s.faces.IsNull()) continue;
@@ -136,10 +137,14 @@ TopoDS_Shape exactSection(const Cylinder& cylinder, const std::map<int, ExactSli
     onto.SetTranslation(
         gp_Vec(-frame.normal.x * s.position, -frame.normal.y * s.position, -frame.normal.z * s.position));
     for (const TopoDS_Shape& f : faces(s.faces)) {
-      const Region2d poly = polygoniseFaces(f, frame, deflection);
-      if (poly.intersect(near).area() >= 0.5 * poly.area()) own.push_back(f.Moved(TopLoc_Location(onto)));
+      Region2d poly = polygoniseFaces(f, frame, deflection);
+      if (poly.intersect(near).area() < 0.5 * poly.area()) continue;
+      candidates.push_back(f.Moved(TopLoc_Location(onto)));
+      polygons.push_back(std::move(poly));
     }
   }
+  std::vector<TopoDS_Shape> own;
+  for (const size_t k : sectionsAddingToUnion(polygons, 2 * deflection)) own.push_back(candidates[k]);
   TopoDS_Shape fused = own.size() > 1 ? boolean({own.front()}, {own.begin() + 1, own.end()}, false)
                                       : (own.empty() ? TopoDS_Shape() : own.front());
   // Material of the polygon section the exact slices lack (merged-in branches): keep it, as
@@ -156,6 +161,22 @@ TopoDS_Shape exactSection(const Cylinder& cylinder, const std::map<int, ExactSli
 }
 
 }  // namespace
+
+std::vector<size_t> sectionsAddingToUnion(const std::vector<Region2d>& sections, double tolerance) {
+  std::vector<size_t> order(sections.size());
+  std::vector<double> area(sections.size());
+  for (size_t k = 0; k < sections.size(); ++k) order[k] = k, area[k] = sections[k].area();
+  std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) { return area[a] > area[b]; });
+  std::vector<size_t> kept;
+  Region2d taken, reach;
+  for (const size_t k : order) {
+    if (!kept.empty() && sections[k].subtract(reach).area() <= tolerance * tolerance) continue;
+    kept.push_back(k);
+    taken = taken.unite(sections[k]);
+    reach = taken.offset(tolerance);
+  }
+  return kept;
+}
 
 TopoDS_Shape facesFromRegion(const Region2d& region, const SliceFrame& frame, double position) {
   std::vector<TopoDS_Shape> out;
