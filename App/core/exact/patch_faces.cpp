@@ -215,8 +215,8 @@ std::vector<PatchFace> exactPatches(const Model& model, const Arrangement& a, co
       needed.erase(std::unique(needed.begin(), needed.end()), needed.end());
       std::vector<double> positions;
       for (int k : needed) positions.push_back(set.slices[k].position);
-      const std::vector<ExactSlice> cut =
-          sliceBrep(model.shape, set.frame, positions, exactDeflection(model.meshDeflection));
+      const std::vector<ExactSlice> cut = sliceBrep(
+          model.shape, set.frame, positions, exactDeflection(model.meshDeflection), SliceDetail::FacesOnly);
       auto& into = f == Family::U ? uSlices : vSlices;
       for (size_t i = 0; i < needed.size(); ++i) into[needed[i]] = cut[i];
     }

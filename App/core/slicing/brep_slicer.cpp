@@ -55,7 +55,7 @@ Region2d::Loop polygoniseWire(const TopoDS_Wire& wire, const TopoDS_Face& face, 
 }
 
 ExactSlice sliceAt(const TopoDS_Shape& solid, const SliceFrame& frame, double position, const gp_Pnt& centre,
-                   double halfSize, double deflection) {
+                   double halfSize, double deflection, SliceDetail detail) {
   // A square face on the plane, centred on the model and larger than it; Common with the
   // solid leaves exactly the section faces.
   const gp_Pnt origin = centre.Translated(gp_Vec(toDir(frame.normal)) *
@@ -102,6 +102,7 @@ ExactSlice sliceAt(const TopoDS_Shape& solid, const SliceFrame& frame, double po
   slice.position = position;
   if (!any) return slice;
   slice.faces = faces;
+  if (detail == SliceDetail::FacesOnly) return slice;
   GProp_GProps props;
   // With a relative precision, the adaptive integration: the default fixed-order one was
   // 1.6% off on a face with a B-spline edge (occ/Pump_TopCover.brep: 4512 for 4587 mm²).
@@ -127,7 +128,8 @@ Region2d polygoniseFaces(const TopoDS_Shape& faces, const SliceFrame& frame, dou
 }
 
 std::vector<ExactSlice> sliceBrep(const TopoDS_Shape& solid, const SliceFrame& frame,
-                                  const std::vector<double>& positions, double deflection) {
+                                  const std::vector<double>& positions, double deflection,
+                                  SliceDetail detail) {
   if (!(deflection > 0)) throw Error(ErrorKind::BadParameter, "the polygon deflection must be positive");
   Bnd_Box box;
   occtGuard("measuring the shape", [&] { BRepBndLib::Add(solid, box); });
@@ -137,8 +139,9 @@ std::vector<ExactSlice> sliceBrep(const TopoDS_Shape& solid, const SliceFrame& f
   std::vector<ExactSlice> slices(positions.size());
   // Booleans only read the solid, so planes can be cut on all cores at once.
   parallelFor(positions.size(), [&](size_t i) {
-    slices[i] = occtGuard("cutting a section",
-                          [&] { return sliceAt(solid, frame, positions[i], centre, halfSize, deflection); });
+    slices[i] = occtGuard("cutting a section", [&] {
+      return sliceAt(solid, frame, positions[i], centre, halfSize, deflection, detail);
+    });
   });
   return slices;
 }

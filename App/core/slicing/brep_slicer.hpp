@@ -26,9 +26,14 @@ inline double exactDeflection(double meshDeflection) {
   return meshDeflection / 10 > 1e-3 ? meshDeflection / 10 : 1e-3;
 }
 
+// Faces only leaves area and region empty: the exact patches need only the faces, and the
+// adaptive area integration and the polygons cost a fifth of a slice.
+enum class SliceDetail { Measured, FacesOnly };
+
 // `deflection` is the largest distance, in mm, between an edge and its polygon.
 std::vector<ExactSlice> sliceBrep(const TopoDS_Shape& solid, const SliceFrame& frame,
-                                  const std::vector<double>& positions, double deflection);
+                                  const std::vector<double>& positions, double deflection,
+                                  SliceDetail detail = SliceDetail::Measured);
 
 // The outer and hole loops of planar faces, polygonised, in the frame's 2D coordinates.
 Region2d polygoniseFaces(const TopoDS_Shape& faces, const SliceFrame& frame, double deflection);
