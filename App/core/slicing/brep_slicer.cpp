@@ -9,6 +9,7 @@
 #include <BRepTools.hxx>
 #include <BRepTools_WireExplorer.hxx>
 #include <BRep_Builder.hxx>
+#include <BRep_Tool.hxx>
 #include <Bnd_Box.hxx>
 #include <GCPnts_QuasiUniformDeflection.hxx>
 #include <GProp_GProps.hxx>
@@ -20,7 +21,9 @@
 #include <gp_Pln.hxx>
 
 #include <algorithm>
+#include <cmath>
 #include <sstream>
+#include <thread>
 
 #include "support/error.hpp"
 #include "support/occt_guard.hpp"
@@ -54,32 +57,31 @@ Region2d::Loop polygoniseWire(const TopoDS_Wire& wire, const TopoDS_Face& face, 
   return loop;
 }
 
-ExactSlice sliceAt(const TopoDS_Shape& solid, const SliceFrame& frame, double position, const gp_Pnt& centre,
-                   double halfSize, double deflection, SliceDetail detail) {
-  // A square face on the plane, centred on the model and larger than it; Common with the
-  // solid leaves exactly the section faces.
-  const gp_Pnt origin = centre.Translated(gp_Vec(toDir(frame.normal)) *
-                                          (position - frame.position({centre.X(), centre.Y(), centre.Z()})));
-  const gp_Pln plane(gp_Ax3(origin, toDir(frame.normal), toDir(frame.xAxis)));
-  const TopoDS_Face cutter = BRepBuilderAPI_MakeFace(plane, -halfSize, halfSize, -halfSize, halfSize);
-  TopoDS_Compound faces;
+// Several planes are cut in one Boolean: its set-up (the solid's own edges and faces, their
+// boxes) is then paid once per batch instead of once per plane, 1.5x faster on
+// step/screw.step. The planes are parallel, so the cutters never meet each other.
+std::vector<ExactSlice> sliceBatch(const std::vector<TopoDS_Shape>& solids, const SliceFrame& frame,
+                                   const std::vector<double>& positions, const gp_Pnt& centre,
+                                   double halfSize, double deflection, SliceDetail detail) {
+  TopoDS_Compound cutters;
   BRep_Builder builder;
-  builder.MakeCompound(faces);
-  bool any = false;
-  // Each solid is cut on its own: a compound of solids that touch or overlap is not a valid
-  // Boolean argument, and OCCT then returned only parts of the section, without an error
-  // (occ/Motor-c.brep: 542 of 4233 mm²). A solid without faces is skipped: Booleans take it
-  // for an infinite solid (occ/Axis_of_bearing.brep holds one). Overlapping solids give
-  // overlapping faces.
-  std::vector<TopoDS_Shape> solids;
-  for (TopExp_Explorer it(solid, TopAbs_SOLID); it.More(); it.Next())
-    if (TopExp_Explorer(it.Current(), TopAbs_FACE).More()) solids.push_back(it.Current());
-  if (solids.empty() && !TopExp_Explorer(solid, TopAbs_SOLID).More()) solids.push_back(solid);
+  builder.MakeCompound(cutters);
+  const double centrePosition = frame.position({centre.X(), centre.Y(), centre.Z()});
+  for (const double position : positions) {
+    // A square face on the plane, centred on the model and larger than it; Common with the
+    // solid leaves exactly the section faces.
+    const gp_Pnt origin = centre.Translated(gp_Vec(toDir(frame.normal)) * (position - centrePosition));
+    const gp_Pln plane(gp_Ax3(origin, toDir(frame.normal), toDir(frame.xAxis)));
+    builder.Add(cutters, BRepBuilderAPI_MakeFace(plane, -halfSize, halfSize, -halfSize, halfSize).Face());
+  }
+  std::vector<TopoDS_Compound> faces(positions.size());
+  std::vector<bool> any(positions.size(), false);
+  for (TopoDS_Compound& f : faces) builder.MakeCompound(f);
   for (const TopoDS_Shape& piece : solids) {
     BRepAlgoAPI_Common common;
     TopTools_ListOfShape arguments, tools;
     arguments.Append(piece);
-    tools.Append(cutter);
+    tools.Append(cutters);
     common.SetArguments(arguments);
     common.SetTools(tools);
     // Non-destructive: the solid is shared by the threads cutting other planes, and a
@@ -90,26 +92,40 @@ ExactSlice sliceAt(const TopoDS_Shape& solid, const SliceFrame& frame, double po
     if (!common.IsDone() || common.HasErrors()) {
       std::ostringstream report;
       common.DumpErrors(report);
-      throw Error(ErrorKind::Geometry,
-                  "the section at " + std::to_string(position) + " mm failed: " + report.str());
+      throw Error(ErrorKind::Geometry, "the sections at " + std::to_string(positions.front()) + " to " +
+                                           std::to_string(positions.back()) + " mm failed: " + report.str());
     }
+    // Each face back to its plane: the nearest position (they are sorted by the caller's
+    // order, not necessarily by value, so all are looked at).
     for (TopExp_Explorer it(common.Shape(), TopAbs_FACE); it.More(); it.Next()) {
-      builder.Add(faces, it.Current());
-      any = true;
+      // A vertex of the face lies on its plane (the face's surface may be the solid's own
+      // face where it lies on the plane, not our cutter's plane).
+      const TopExp_Explorer vertex(it.Current(), TopAbs_VERTEX);
+      if (!vertex.More()) throw Error(ErrorKind::Geometry, "a section face has no vertex");
+      const gp_Pnt at = BRep_Tool::Pnt(TopoDS::Vertex(vertex.Current()));
+      const double p = frame.position({at.X(), at.Y(), at.Z()});
+      size_t nearest = 0;
+      for (size_t k = 1; k < positions.size(); ++k)
+        if (std::abs(positions[k] - p) < std::abs(positions[nearest] - p)) nearest = k;
+      builder.Add(faces[nearest], it.Current());
+      any[nearest] = true;
     }
   }
-  ExactSlice slice;
-  slice.position = position;
-  if (!any) return slice;
-  slice.faces = faces;
-  if (detail == SliceDetail::FacesOnly) return slice;
-  GProp_GProps props;
-  // With a relative precision, the adaptive integration: the default fixed-order one was
-  // 1.6% off on a face with a B-spline edge (occ/Pump_TopCover.brep: 4512 for 4587 mm²).
-  BRepGProp::SurfaceProperties(faces, props, 1e-9);
-  slice.area = props.Mass();
-  slice.region = polygoniseFaces(faces, frame, deflection);
-  return slice;
+  std::vector<ExactSlice> out(positions.size());
+  for (size_t k = 0; k < positions.size(); ++k) {
+    ExactSlice& slice = out[k];
+    slice.position = positions[k];
+    if (!any[k]) continue;
+    slice.faces = faces[k];
+    if (detail == SliceDetail::FacesOnly) continue;
+    GProp_GProps props;
+    // With a relative precision, the adaptive integration: the default fixed-order one was
+    // 1.6% off on a face with a B-spline edge (occ/Pump_TopCover.brep: 4512 for 4587 mm²).
+    BRepGProp::SurfaceProperties(slice.faces, props, 1e-9);
+    slice.area = props.Mass();
+    slice.region = polygoniseFaces(slice.faces, frame, deflection);
+  }
+  return out;
 }
 
 }  // namespace
@@ -136,12 +152,29 @@ std::vector<ExactSlice> sliceBrep(const TopoDS_Shape& solid, const SliceFrame& f
   if (box.IsVoid()) throw Error(ErrorKind::BadInput, "the shape to slice is empty");
   const gp_Pnt centre = (box.CornerMin().XYZ() + box.CornerMax().XYZ()) / 2;
   const double halfSize = box.CornerMin().Distance(box.CornerMax());
+  // Each solid is cut on its own: a compound of solids that touch or overlap is not a valid
+  // Boolean argument, and OCCT then returned only parts of the section, without an error
+  // (occ/Motor-c.brep: 542 of 4233 mm²). A solid without faces is skipped: Booleans take it
+  // for an infinite solid (occ/Axis_of_bearing.brep holds one). Overlapping solids give
+  // overlapping faces.
+  std::vector<TopoDS_Shape> solids;
+  for (TopExp_Explorer it(solid, TopAbs_SOLID); it.More(); it.Next())
+    if (TopExp_Explorer(it.Current(), TopAbs_FACE).More()) solids.push_back(it.Current());
+  if (solids.empty() && !TopExp_Explorer(solid, TopAbs_SOLID).More()) solids.push_back(solid);
+  // Batches of up to 16 planes (larger ones gained nothing on screw.step), at least four
+  // per core so the cores finish together.
+  const size_t cores = std::max(1u, std::thread::hardware_concurrency());
+  const size_t batch = std::clamp<size_t>(positions.size() / (4 * cores), 1, 16);
+  const size_t batches = (positions.size() + batch - 1) / batch;
   std::vector<ExactSlice> slices(positions.size());
-  // Booleans only read the solid, so planes can be cut on all cores at once.
-  parallelFor(positions.size(), [&](size_t i) {
-    slices[i] = occtGuard("cutting a section", [&] {
-      return sliceAt(solid, frame, positions[i], centre, halfSize, deflection, detail);
+  // Booleans only read the solid, so batches can be cut on all cores at once.
+  parallelFor(batches, [&](size_t b) {
+    const size_t first = b * batch, last = std::min(positions.size(), first + batch);
+    const std::vector<double> some(positions.begin() + first, positions.begin() + last);
+    const std::vector<ExactSlice> cut = occtGuard("cutting sections", [&] {
+      return sliceBatch(solids, frame, some, centre, halfSize, deflection, detail);
     });
+    std::copy(cut.begin(), cut.end(), slices.begin() + first);
   });
   return slices;
 }
