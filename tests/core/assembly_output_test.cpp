@@ -71,10 +71,10 @@ Bnd_Box bounds(const TopoDS_Shape& shape) {
 TEST(AssemblyOutput, GlbIsInMetresWithYUpAndTheAssemblysBounds) {
   const Design& d = torus();
   const TopoDS_Shape all = assemble(d.arrangement, d.faces, 40);
-  const std::vector<int> families = assemblyFamilies(d.arrangement, d.faces);
+  const std::vector<Panel3> panels = assemblyPanels(d.arrangement, d.faces, 40);
   test::TempDir dir;
   const std::string path = dir.file("torus.glb");
-  writeGltf(all, path, families);
+  writeGltf(panels, path);
 
   // The 12-byte header and the JSON chunk (glTF 2.0, "Binary glTF Layout").
   const std::string bytes = readAll(path);
@@ -90,7 +90,7 @@ TEST(AssemblyOutput, GlbIsInMetresWithYUpAndTheAssemblysBounds) {
 
   // One mesh per patch; no node moves anything, so the accessors' bounds are the model's.
   ASSERT_TRUE(gltf.contains("meshes"));
-  EXPECT_EQ(gltf["meshes"].size(), families.size());
+  EXPECT_EQ(gltf["meshes"].size(), panels.size());
   for (const auto& node : gltf["nodes"]) {
     EXPECT_FALSE(node.contains("matrix") || node.contains("translation") || node.contains("rotation") ||
                  node.contains("scale"));
@@ -124,6 +124,42 @@ TEST(AssemblyOutput, GlbIsInMetresWithYUpAndTheAssemblysBounds) {
     colours.insert(pbr["baseColorFactor"].get<std::vector<double>>());
   }
   EXPECT_EQ(colours.size(), 2u);
+
+  // The triangles cover the outlines exactly: their area is the panels' (even-odd) area.
+  const size_t bin = 20 + jsonLength + 8;
+  auto view = [&](int accessor) {
+    const auto& a = gltf["accessors"][accessor];
+    const auto& v = gltf["bufferViews"][a["bufferView"].get<int>()];
+    return bin + v.value("byteOffset", 0) + a.value("byteOffset", 0);
+  };
+  double triangles = 0;
+  for (const auto& mesh : gltf["meshes"])
+    for (const auto& primitive : mesh["primitives"]) {
+      const size_t points = view(primitive["attributes"]["POSITION"].get<int>());
+      const auto& indices = gltf["accessors"][primitive["indices"].get<int>()];
+      // Unsigned short or unsigned int indices, as the mesh needs.
+      const int type = indices["componentType"].get<int>();
+      ASSERT_TRUE(type == 5123 || type == 5125) << type;
+      const size_t width = type == 5123 ? 2 : 4;
+      auto point = [&](uint32_t i) {
+        float p[3];
+        std::memcpy(p, bytes.data() + points + 12 * i, 12);
+        return Vec3{p[0], p[1], p[2]};
+      };
+      const size_t at = view(primitive["indices"].get<int>());
+      auto index = [&](int k) {
+        uint32_t i = 0;
+        std::memcpy(&i, bytes.data() + at + width * k, width);
+        return i;
+      };
+      for (int t = 0; t < indices["count"].get<int>(); t += 3) {
+        const Vec3 a = point(index(t)), b = point(index(t + 1)), c = point(index(t + 2));
+        triangles += 0.5 * norm(cross(b - a, c - a)) * 1e6;  // m² to mm²
+      }
+    }
+  double outlines = 0;
+  for (const PatchFace& f : d.faces) outlines += f.outline.area();
+  EXPECT_NEAR(triangles, outlines, 1e-4 * outlines);
   // Nothing is left beside the file: no temporary .glb, no side .bin.
   EXPECT_EQ(std::distance(std::filesystem::directory_iterator(dir.file("")), {}), 1);
 }
@@ -132,7 +168,7 @@ TEST(AssemblyOutput, GltfErrorsAreIoErrors) {
   const Design& d = torus();
   test::TempDir dir;
   try {
-    writeGltf(assemble(d.arrangement, d.faces, 90), dir.file("missing/folder/a.glb"));
+    writeGltf(assemblyPanels(d.arrangement, d.faces, 90), dir.file("missing/folder/a.glb"));
     FAIL() << "no error";
   } catch (const Error& e) {
     EXPECT_EQ(e.kind(), ErrorKind::Io);
@@ -147,7 +183,13 @@ TEST(AssemblyOutput, PanelsHaveTheAssemblysPoses) {
   const Design& d = torus();
   for (double theta : {90.0, 25.0}) {
     const std::vector<Panel3> panels = assemblyPanels(d.arrangement, d.faces, theta);
-    ASSERT_EQ(panels.size(), assemblyFamilies(d.arrangement, d.faces).size());
+    // One per patch with faces, in order, with its family.
+    std::vector<int> families;
+    for (size_t k = 0; k < d.faces.size(); ++k)
+      if (!d.faces[k].shape.IsNull())
+        families.push_back(d.arrangement.scaffold.patches[k].family == Family::U ? 0 : 1);
+    ASSERT_EQ(panels.size(), families.size());
+    for (size_t k = 0; k < panels.size(); ++k) EXPECT_EQ(panels[k].family, families[k]);
     Box3 box;
     double offPlane = 0;  // every point lies on its panel's plane, whose normal is given
     for (const Panel3& p : panels)

@@ -73,9 +73,10 @@ DesignFiles writeDesignFiles(const Model& model, const DesignParams& params, con
   clock.lap("export SVG + DXF");
   writeShape(assembly, path("assembly.brep"));
   clock.lap("export BREP");
-  writeGltf(assembly, path("assembly.glb"), assemblyFamilies(d.arrangement, d.patches));
+  const std::vector<Panel3> panels = assemblyPanels(d.arrangement, d.patches, foldAngle);
+  writeGltf(panels, path("assembly.glb"));
   clock.lap("export glTF");
-  writeAssemblyPng(assemblyPanels(d.arrangement, d.patches, foldAngle), path("assembly.png"));
+  writeAssemblyPng(panels, path("assembly.png"));
   clock.lap("export assembly PNG");
   step.get();
   clock.lap("export STEP, waiting for it");

@@ -1,11 +1,9 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 #include "output/gltf.hpp"
 
-#include <BRepBuilderAPI_Copy.hxx>
-#include <BRepMesh_IncrementalMesh.hxx>
 #include <BRep_Builder.hxx>
-#include <BRep_Tool.hxx>
 #include <Message_ProgressRange.hxx>
+#include <Poly_Triangle.hxx>
 #include <Poly_Triangulation.hxx>
 #include <Quantity_Color.hxx>
 #include <Quantity_ColorRGBA.hxx>
@@ -13,10 +11,8 @@
 #include <TColStd_IndexedDataMapOfStringString.hxx>
 #include <TDataStd_Name.hxx>
 #include <TDocStd_Document.hxx>
-#include <TopExp_Explorer.hxx>
-#include <TopoDS.hxx>
 #include <TopoDS_Compound.hxx>
-#include <TopoDS_Iterator.hxx>
+#include <TopoDS_Face.hxx>
 #include <XCAFDoc_DocumentTool.hxx>
 #include <XCAFDoc_ShapeTool.hxx>
 #include <XCAFDoc_VisMaterial.hxx>
@@ -30,6 +26,7 @@
 #include <system_error>
 
 #include "output/assembly_png.hpp"
+#include "output/triangulate.hpp"
 #include "support/atomic_file.hpp"
 #include "support/error.hpp"
 #include "support/occt_guard.hpp"
@@ -37,32 +34,25 @@
 namespace sliceform {
 namespace {
 
-// Paper curves are arcs a few mm across: 0.05 mm keeps them smooth in any viewer.
-constexpr double kLinearDeflection = 0.05;  // mm
-constexpr double kAngularDeflection = 0.2;  // rad
-
-// The patches as they come: the sub-shapes of the compound, or the shape itself.
-std::vector<TopoDS_Shape> parts(const TopoDS_Shape& assembly) {
-  std::vector<TopoDS_Shape> out;
-  if (assembly.ShapeType() != TopAbs_COMPOUND) return {assembly};
-  for (TopoDS_Iterator it(assembly); it.More(); it.Next()) out.push_back(it.Value());
-  return out;
-}
-
-// Meshes a copy, so the caller's faces are not changed (nor meshed by two writers at once).
-TopoDS_Shape meshedCopy(const TopoDS_Shape& assembly) {
-  BRepBuilderAPI_Copy copy(assembly, /*copyGeom=*/false);
-  const TopoDS_Shape shape = copy.Shape();
-  BRepMesh_IncrementalMesh mesh(shape, kLinearDeflection, /*isRelative=*/false, kAngularDeflection,
-                                /*isInParallel=*/true);
-  // The writer silently skips faces without a mesh: a missing patch is an error, not a detail.
-  int unmeshed = 0;
-  for (TopExp_Explorer it(shape, TopAbs_FACE); it.More(); it.Next()) {
-    TopLoc_Location location;
-    if (BRep_Tool::Triangulation(TopoDS::Face(it.Current()), location).IsNull()) ++unmeshed;
+// One face per panel carrying only its triangulation (no surface, no edges): all the glTF
+// writer reads. Flat paper: every node has the panel's normal.
+TopoDS_Face meshedFace(const Panel3& panel) {
+  const Triangles t = triangulate(panel.loops, panel.normal);
+  if (t.corners.empty()) throw Error(ErrorKind::Geometry, "a patch outline encloses no area");
+  Handle(Poly_Triangulation) mesh =
+      new Poly_Triangulation(static_cast<int>(t.points.size()), static_cast<int>(t.corners.size()),
+                             /*hasUVNodes=*/false, /*hasNormals=*/true);
+  const gp_Dir normal(panel.normal.x, panel.normal.y, panel.normal.z);
+  for (size_t i = 0; i < t.points.size(); ++i) {
+    mesh->SetNode(static_cast<int>(i) + 1, gp_Pnt(t.points[i].x, t.points[i].y, t.points[i].z));
+    mesh->SetNormal(static_cast<int>(i) + 1, normal);
   }
-  if (unmeshed > 0) throw Error(ErrorKind::Geometry, std::to_string(unmeshed) + " faces cannot be meshed");
-  return shape;
+  for (size_t i = 0; i < t.corners.size(); ++i)
+    mesh->SetTriangle(static_cast<int>(i) + 1,
+                      Poly_Triangle(t.corners[i][0] + 1, t.corners[i][1] + 1, t.corners[i][2] + 1));
+  TopoDS_Face face;
+  BRep_Builder().MakeFace(face, mesh);
+  return face;
 }
 
 // Paper: not metal (glTF's default metallicFactor is 1, which viewers show as dark chrome),
@@ -83,21 +73,20 @@ TDF_Label paperMaterial(const Handle(XCAFDoc_VisMaterialTool) & materials, int f
 // a compound with no location of its own, so the fold pose goes into the vertices rather
 // than into a node transform: every node sits at the identity and the accessors' bounds are
 // the model's.
-Handle(TDocStd_Document) document(const TopoDS_Shape& meshed, const std::vector<int>& families) {
+Handle(TDocStd_Document) document(const std::vector<Panel3>& panels) {
   Handle(TDocStd_Document) doc = new TDocStd_Document("BinXCAF");
   XCAFDoc_DocumentTool::Set(doc->Main());
   const Handle(XCAFDoc_ShapeTool) shapes = XCAFDoc_DocumentTool::ShapeTool(doc->Main());
   const Handle(XCAFDoc_VisMaterialTool) materials = XCAFDoc_DocumentTool::VisMaterialTool(doc->Main());
   const TDF_Label paper[2] = {paperMaterial(materials, 0), paperMaterial(materials, 1)};
   BRep_Builder builder;
-  const std::vector<TopoDS_Shape> patches = parts(meshed);
-  for (size_t k = 0; k < patches.size(); ++k) {
+  for (size_t k = 0; k < panels.size(); ++k) {
     TopoDS_Compound part;
     builder.MakeCompound(part);
-    builder.Add(part, patches[k]);
+    builder.Add(part, meshedFace(panels[k]));
     const TDF_Label label = shapes->AddShape(part, /*makeAssembly=*/false);
     TDataStd_Name::Set(label, TCollection_ExtendedString(("patch " + std::to_string(k + 1)).c_str()));
-    materials->SetShapeMaterial(label, paper[k < families.size() && families[k] == 1 ? 1 : 0]);
+    materials->SetShapeMaterial(label, paper[panels[k].family == 1 ? 1 : 0]);
   }
   return doc;
 }
@@ -138,14 +127,13 @@ class PrivateFolder {
 
 }  // namespace
 
-void writeGltf(const TopoDS_Shape& assembly, const std::string& path, const std::vector<int>& families) {
-  if (assembly.IsNull()) throw Error(ErrorKind::Io, "cannot write " + path + ": the assembly is empty");
+void writeGltf(const std::vector<Panel3>& panels, const std::string& path) {
+  if (panels.empty()) throw Error(ErrorKind::Io, "cannot write " + path + ": the assembly is empty");
   writeAtomically(path, [&](const std::string& temporary) {
     const PrivateFolder folder(temporary, path);
     const std::string glb = folder.file("assembly.glb");
     try {
-      occtGuard("writing the glTF assembly",
-                [&] { writeGlb(document(meshedCopy(assembly), families), glb, path); });
+      occtGuard("writing the glTF assembly", [&] { writeGlb(document(panels), glb, path); });
     } catch (const Error& e) {
       // Whatever OCCT stumbled on, the user sees a file that could not be written.
       if (e.kind() != ErrorKind::Io) throw Error(ErrorKind::Io, "cannot write " + path + ": " + e.what());
@@ -155,13 +143,6 @@ void writeGltf(const TopoDS_Shape& assembly, const std::string& path, const std:
     std::filesystem::rename(glb, temporary, ec);
     if (ec) throw Error(ErrorKind::Io, "cannot write " + path + ": " + ec.message());
   });
-}
-
-std::vector<int> assemblyFamilies(const Arrangement& a, const std::vector<PatchFace>& patches) {
-  std::vector<int> out;
-  for (size_t k = 0; k < patches.size(); ++k)
-    if (!patches[k].shape.IsNull()) out.push_back(a.scaffold.patches[k].family == Family::U ? 0 : 1);
-  return out;
 }
 
 }  // namespace sliceform
