@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -90,8 +91,8 @@ void printRealization(const Design& d, const DesignParams& params) {
 }
 
 void writeOutputs(const Model& model, const DesignParams& params, const Design& d, const DesignOptions& o,
-                  const std::vector<StageTime>& before) {
-  const DesignFiles files = writeDesignFiles(model, params, d, o.output, o.foldAngle, before);
+                  const std::vector<StageTime>& before, DesignFilesWriter& writer) {
+  const DesignFiles files = writer.finish(model, params, d, before);
   for (const std::string& name : files.removed)
     std::printf("removed    %s/%s, left by an earlier run with more sheets\n", o.output.c_str(),
                 name.c_str());
@@ -160,7 +161,12 @@ void runDesign(DesignOptions o) {
   o.params.sheet = sheetSpec(o.sheet, o.margin, o.spacing);
   o.params.sheet.rotate = !o.noRotate;
   ProgressBar bar(::isatty(2));
-  const Design d = runDesign(model, o.params, std::ref(bar));
+  // The 3D assembly's STEP file is started as soon as the patches are final.
+  std::optional<DesignFilesWriter> writer;
+  if (!o.output.empty()) writer.emplace(o.output, o.foldAngle);
+  const Design d = runDesign(model, o.params, std::ref(bar), [&](const Design& partial) {
+    if (writer) writer->start(partial);
+  });
   bar.clear();
   const Arrangement& a = d.arrangement;
 
@@ -209,7 +215,7 @@ void runDesign(DesignOptions o) {
           "scaffold by hinges that hold\n",
           big, f == Family::U ? "U" : "V");
   }
-  if (!o.output.empty()) writeOutputs(model, o.params, d, o, readTime);
+  if (!o.output.empty()) writeOutputs(model, o.params, d, o, readTime, *writer);
   // Never hand on a design that cannot be built silently: the files are written so the
   // problem can be looked at, and the exit code says it failed.
   if (!a.certificate.stable)

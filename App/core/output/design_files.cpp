@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 #include "output/design_files.hpp"
 
+#include <chrono>
 #include <filesystem>
-#include <future>
 
 #include "assembly/fold.hpp"
 #include "output/assembly_png.hpp"
@@ -11,45 +11,60 @@
 #include "output/sheet_dxf.hpp"
 #include "output/sheets_cairo.hpp"
 #include "support/error.hpp"
-#include "support/stopwatch.hpp"
 
 namespace sliceform {
+namespace {
+
+namespace fs = std::filesystem;
+
+void createFolder(const std::string& folder) {
+  std::error_code failed;
+  fs::create_directories(folder, failed);
+  if (failed) throw Error(ErrorKind::Io, "cannot create the folder " + folder + ": " + failed.message());
+}
+
+}  // namespace
 
 std::string sheetFileName(int sheet, const char* extension) {
   return "sheet-" + std::to_string(sheet + 1) + extension;
 }
 
-DesignFiles writeDesignFiles(const Model& model, const DesignParams& params, const Design& d,
-                             const std::string& folder, double foldAngle,
-                             const std::vector<StageTime>& before) {
-  namespace fs = std::filesystem;
-  std::error_code failed;
-  fs::create_directories(folder, failed);
-  if (failed) throw Error(ErrorKind::Io, "cannot create the folder " + folder + ": " + failed.message());
-  const fs::path dir(folder);
+DesignFilesWriter::DesignFilesWriter(std::string folder, double foldAngleDegrees)
+    : folder_(std::move(folder)), foldAngle_(foldAngleDegrees) {}
+
+DesignFilesWriter::~DesignFilesWriter() {
+  if (step_.valid()) step_.wait();  // never leave the thread writing into a folder we left
+}
+
+void DesignFilesWriter::start(const Design& d) {
+  if (step_.valid()) return;
+  // Posed here, synchronously: the thread then holds its own handles to the faces and
+  // nothing of `d`, which the caller goes on to change and move.
+  TopoDS_Shape assembly = assemble(d.arrangement, d.patches, foldAngle_);
+  const std::string file = (fs::path(folder_) / "assembly.step").string();
+  step_ = std::async(std::launch::async, [assembly = std::move(assembly), file, folder = folder_] {
+    const auto begin = std::chrono::steady_clock::now();
+    createFolder(folder);
+    writeShape(assembly, file);
+    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - begin).count();
+  });
+}
+
+DesignFiles DesignFilesWriter::finish(const Model& model, const DesignParams& params, const Design& d,
+                                      const std::vector<StageTime>& before) {
+  createFolder(folder_);
+  start(d);
+  const fs::path dir(folder_);
   DesignFiles files;
   auto path = [&](const std::string& name) {
     files.written.push_back(name);
     return (dir / name).string();
   };
+  path("assembly.step");
   // timings.json goes last so it can hold what writing the others cost.
   std::vector<StageTime> timings = before;
   timings.insert(timings.end(), d.timings.begin(), d.timings.end());
   Stopwatch clock(timings);
-  // The STEP writer is the slowest file and single-threaded (seconds on a mesh's polygon
-  // patches), so it runs on the second core while the others are written. It reads the
-  // assembly and works on its own copy; nothing else here changes the assembly's shapes
-  // (the glTF writer meshes a copy too).
-  const TopoDS_Shape assembly = assemble(d.arrangement, d.patches, foldAngle);
-  clock.lap("export fold");
-  double stepMs = 0;
-  std::future<void> step = std::async(std::launch::async, [&, file = path("assembly.step")] {
-    std::vector<StageTime> own;
-    Stopwatch stepClock(own);
-    writeShape(assembly, file);
-    stepClock.lap("STEP");
-    stepMs = own.front().ms;
-  });
   writeJson(reportJson(model, params, d), path("report.json"));
   clock.lap("export report");
   const std::vector<SheetDrawing> sheets = sheetDrawings(d.layout);
@@ -61,6 +76,7 @@ DesignFiles writeDesignFiles(const Model& model, const DesignParams& params, con
     writeSheetSvg(sheets[k], d.layout.sheet, path(sheetFileName(static_cast<int>(k), ".svg")));
     writeSheetDxf(sheets[k], d.layout.sheet, path(sheetFileName(static_cast<int>(k), ".dxf")));
   }
+  std::error_code failed;
   for (const char* extension : {".svg", ".dxf"})
     for (int k = static_cast<int>(sheets.size());; ++k) {
       const fs::path stale = dir / sheetFileName(k, extension);
@@ -71,18 +87,25 @@ DesignFiles writeDesignFiles(const Model& model, const DesignParams& params, con
       files.removed.push_back(stale.filename().string());
     }
   clock.lap("export SVG + DXF");
-  writeShape(assembly, path("assembly.brep"));
+  writeShape(assemble(d.arrangement, d.patches, foldAngle_), path("assembly.brep"));
   clock.lap("export BREP");
-  const std::vector<Panel3> panels = assemblyPanels(d.arrangement, d.patches, foldAngle);
+  const std::vector<Panel3> panels = assemblyPanels(d.arrangement, d.patches, foldAngle_);
   writeGltf(panels, path("assembly.glb"));
   clock.lap("export glTF");
   writeAssemblyPng(panels, path("assembly.png"));
   clock.lap("export assembly PNG");
-  step.get();
+  const double stepMs = step_.get();
   clock.lap("export STEP, waiting for it");
   timings.push_back({"export STEP, in parallel", stepMs, /*alongside=*/true});
   writeJson(timingsJson(timings), path("timings.json"));
   return files;
+}
+
+DesignFiles writeDesignFiles(const Model& model, const DesignParams& params, const Design& d,
+                             const std::string& folder, double foldAngle,
+                             const std::vector<StageTime>& before) {
+  DesignFilesWriter writer(folder, foldAngle);
+  return writer.finish(model, params, d, before);
 }
 
 }  // namespace sliceform

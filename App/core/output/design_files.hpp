@@ -4,6 +4,7 @@
 // Shared by the CLI and the FreeCAD workbench so both write the same files.
 #pragma once
 
+#include <future>
 #include <string>
 #include <vector>
 
@@ -17,13 +18,39 @@ struct DesignFiles {
   std::vector<std::string> removed;  // sheet files an earlier, longer run left behind
 };
 
+// Writes a design's files into a folder. The STEP assembly is the slowest file and
+// single-threaded (seconds for a mesh's polygon patches: OCCT's writer is quadratic in the
+// edges of a face), so it is written on a thread of its own, started as soon as the
+// patches are final (start(), from runDesign's PatchesReady) and so beside the layout and
+// the other files; finish() writes the others and waits for it.
+//
 // Each file goes to a temporary name first and is renamed, so a failure leaves the earlier
 // file whole. Sheet files beyond this design's sheet count (sheet-N.svg/.dxf only) are
 // removed so a stale sheet is never cut by mistake. timings.json, written last, holds
 // `before` (the caller's own stages, such as reading the model), the design's stages and
-// what writing each file cost ("export ..."); the STEP file is written on a second thread,
-// so "export STEP, in parallel" is its own time and "export STEP, waiting for it" what it
-// added to the run (the others add up to the wall time). Throws Io.
+// what writing each file cost ("export ..."); "export STEP, in parallel" is the STEP
+// thread's own time and "export STEP, waiting for it" what it added to the run (the others
+// add up to the wall time). Throws Io.
+class DesignFilesWriter {
+ public:
+  DesignFilesWriter(std::string folder, double foldAngleDegrees);
+  ~DesignFilesWriter();  // waits for the STEP thread
+  DesignFilesWriter(const DesignFilesWriter&) = delete;
+  DesignFilesWriter& operator=(const DesignFilesWriter&) = delete;
+
+  // Starts writing assembly.step; the design's arrangement and patches are final. Once only.
+  void start(const Design& design);
+  // Writes the other files (starting the STEP file first if start() was not called).
+  DesignFiles finish(const Model& model, const DesignParams& params, const Design& design,
+                     const std::vector<StageTime>& before = {});
+
+ private:
+  std::string folder_;
+  double foldAngle_;
+  std::future<double> step_;  // ms the STEP file took
+};
+
+// start() and finish() at once.
 DesignFiles writeDesignFiles(const Model& model, const DesignParams& params, const Design& design,
                              const std::string& folder, double foldAngleDegrees,
                              const std::vector<StageTime>& before = {});

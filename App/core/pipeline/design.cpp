@@ -18,7 +18,8 @@ auto timed(std::vector<StageTime>& timings, const char* stage, const Progress& p
 
 }  // namespace
 
-Design runDesign(const Model& model, DesignParams params, const Progress& progress) {
+Design runDesign(const Model& model, DesignParams params, const Progress& progress,
+                 const PatchesReady& patchesReady) {
   // Hinges must hold with the slot cut: the paper beside it is measured from its walls.
   checkSlotParams(params.slots);
   params.arrangement.hinges.slotWidth = params.slots.width();
@@ -44,6 +45,7 @@ Design runDesign(const Model& model, DesignParams params, const Progress& progre
       if (hinges[h].holds && d.realization.meets[h]) pins.push_back({hinges[h].u, hinges[h].v});
     return certify(bars, pins);
   });
+  if (patchesReady) patchesReady(d);
   d.layout = timed(d.timings, "layout", progress, [&] { return layOut(d, params.sheet); });
   return d;
 }

@@ -34,7 +34,12 @@ struct Design {
 
 using Progress = std::function<void(const char* stage)>;
 constexpr int kDesignStages = 6;
+// Hears of the design once its patches are built and checked, before the layout: the 3D
+// assembly is then final, so its files can be written while the sheets are laid out. The
+// design is the pipeline's own, about to change: copy what is needed, keep no reference.
+using PatchesReady = std::function<void(const Design& design)>;
 
-Design runDesign(const Model& model, DesignParams params, const Progress& progress = {});
+Design runDesign(const Model& model, DesignParams params, const Progress& progress = {},
+                 const PatchesReady& patchesReady = {});
 
 }  // namespace sliceform
