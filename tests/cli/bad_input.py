@@ -128,6 +128,13 @@ def main():
         print("{} failed runs leave earlier outputs intact".format("ok  " if before == after else "FAIL"))
         if before != after:
             failures.append("earlier outputs changed")
+        # A run that fails late (the sheet is found too small after the 3D file was started)
+        # leaves no folder of its own behind.
+        fresh = os.path.join(tmp, "fresh")
+        subprocess.run([sliceform, "design", ball, "-n", "32", "-o", fresh, "--sheet", "50x50"], capture_output=True)
+        print("{} a failed run leaves no new folder".format("FAIL" if os.path.exists(fresh) else "ok  "))
+        if os.path.exists(fresh):
+            failures.append("a failed run left " + ", ".join(os.listdir(fresh)) + " in a new folder")
 
         # Determinism: the same input, byte-identical files (timings go to timings.json).
         again = os.path.join(tmp, "again")

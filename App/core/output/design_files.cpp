@@ -4,6 +4,8 @@
 #include <chrono>
 #include <filesystem>
 
+#include <unistd.h>
+
 #include "assembly/fold.hpp"
 #include "output/assembly_png.hpp"
 #include "output/gltf.hpp"
@@ -33,7 +35,13 @@ DesignFilesWriter::DesignFilesWriter(std::string folder, double foldAngleDegrees
     : folder_(std::move(folder)), foldAngle_(foldAngleDegrees) {}
 
 DesignFilesWriter::~DesignFilesWriter() {
-  if (step_.valid()) step_.wait();  // never leave the thread writing into a folder we left
+  if (!step_.valid()) return;
+  // The run failed after start(): what an earlier run wrote stays as it was. The STEP file
+  // went to a name of its own, which goes, and so does the folder if this run made it.
+  step_.wait();
+  std::error_code ignored;
+  fs::remove(stepFile_, ignored);
+  if (madeFolder_) fs::remove(folder_, ignored);  // only if empty
 }
 
 void DesignFilesWriter::start(const Design& d) {
@@ -41,13 +49,17 @@ void DesignFilesWriter::start(const Design& d) {
   // Posed here, synchronously: the thread then holds its own handles to the faces and
   // nothing of `d`, which the caller goes on to change and move.
   TopoDS_Shape assembly = assemble(d.arrangement, d.patches, foldAngle_);
-  const std::string file = (fs::path(folder_) / "assembly.step").string();
-  step_ = std::async(std::launch::async, [assembly = std::move(assembly), file, folder = folder_] {
-    const auto begin = std::chrono::steady_clock::now();
-    createFolder(folder);
-    writeShape(assembly, file);
-    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - begin).count();
-  });
+  // Under a name of its own until finish() renames it: the run may still fail (a patch too
+  // large for the sheet), and then the earlier run's assembly.step must stay.
+  stepFile_ = (fs::path(folder_) / (".assembly-" + std::to_string(::getpid()) + ".step")).string();
+  madeFolder_ = !fs::exists(folder_);
+  step_ =
+      std::async(std::launch::async, [assembly = std::move(assembly), file = stepFile_, folder = folder_] {
+        const auto begin = std::chrono::steady_clock::now();
+        createFolder(folder);
+        writeShape(assembly, file);
+        return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - begin).count();
+      });
 }
 
 DesignFiles DesignFilesWriter::finish(const Model& model, const DesignParams& params, const Design& d,
@@ -60,7 +72,6 @@ DesignFiles DesignFilesWriter::finish(const Model& model, const DesignParams& pa
     files.written.push_back(name);
     return (dir / name).string();
   };
-  path("assembly.step");
   // timings.json goes last so it can hold what writing the others cost.
   std::vector<StageTime> timings = before;
   timings.insert(timings.end(), d.timings.begin(), d.timings.end());
@@ -95,6 +106,13 @@ DesignFiles DesignFilesWriter::finish(const Model& model, const DesignParams& pa
   writeAssemblyPng(panels, path("assembly.png"));
   clock.lap("export assembly PNG");
   const double stepMs = step_.get();
+  const std::string step = path("assembly.step");
+  fs::rename(stepFile_, step, failed);
+  if (failed) {
+    std::error_code ignored;
+    fs::remove(stepFile_, ignored);
+    throw Error(ErrorKind::Io, "cannot write " + step + ": " + failed.message());
+  }
   clock.lap("export STEP, waiting for it");
   timings.push_back({"export STEP, in parallel", stepMs, /*alongside=*/true});
   writeJson(timingsJson(timings), path("timings.json"));

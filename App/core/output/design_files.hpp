@@ -47,6 +47,8 @@ class DesignFilesWriter {
  private:
   std::string folder_;
   double foldAngle_;
+  std::string stepFile_;      // where the STEP thread writes, renamed by finish()
+  bool madeFolder_ = false;   // the folder did not exist before start()
   std::future<double> step_;  // ms the STEP file took
 };
 
