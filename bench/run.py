@@ -31,8 +31,9 @@ CAD = (".step", ".stp", ".iges", ".igs", ".brep", ".brp")
 STAGES = ["slice", "reeb", "gca", "frames", "certificate", "quality", "realization", "exact patches",
           "check", "certificate again", "layout"]
 # What writing each file costs, as timings.json names it, then their sum.
-EXPORT = ["export fold", "export report", "export PDF", "export sheets PNG", "export SVG + DXF", "export BREP",
-          "export glTF", "export assembly PNG", "export STEP, waiting for it", "export STEP, in parallel", "export"]
+EXPORT = ["export drawings", "export files", "export STEP, waiting for it", "export"] + [
+    "export %s, in parallel" % f for f in ("report", "PDF", "sheets PNG", "SVG + DXF", "BREP", "glTF", "assembly PNG",
+                                           "STEP")]
 
 
 def median(xs):

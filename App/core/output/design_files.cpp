@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 #include "output/design_files.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <filesystem>
 
@@ -13,6 +14,7 @@
 #include "output/sheet_dxf.hpp"
 #include "output/sheets_cairo.hpp"
 #include "support/error.hpp"
+#include "support/parallel.hpp"
 
 namespace sliceform {
 namespace {
@@ -76,17 +78,39 @@ DesignFiles DesignFilesWriter::finish(const Model& model, const DesignParams& pa
   std::vector<StageTime> timings = before;
   timings.insert(timings.end(), d.timings.begin(), d.timings.end());
   Stopwatch clock(timings);
-  writeJson(reportJson(model, params, d), path("report.json"));
-  clock.lap("export report");
   const std::vector<SheetDrawing> sheets = sheetDrawings(d.layout);
-  writeSheetsPdf(sheets, d.layout.sheet, path("sheets.pdf"));
-  clock.lap("export PDF");
-  writeSheetsPng(sheets, d.layout.sheet, path("sheets.png"));
-  clock.lap("export sheets PNG");
-  for (size_t k = 0; k < sheets.size(); ++k) {
-    writeSheetSvg(sheets[k], d.layout.sheet, path(sheetFileName(static_cast<int>(k), ".svg")));
-    writeSheetDxf(sheets[k], d.layout.sheet, path(sheetFileName(static_cast<int>(k), ".dxf")));
-  }
+  const std::vector<Panel3> panels = assemblyPanels(d.arrangement, d.patches, foldAngle_);
+  clock.lap("export drawings");
+  // The files are independent of each other: written on all cores, the longest first.
+  struct File {
+    const char* stage;
+    std::function<void()> write;
+  };
+  std::vector<File> work{
+      {"export assembly PNG, in parallel", [&, to = path("assembly.png")] { writeAssemblyPng(panels, to); }},
+      {"export glTF, in parallel", [&, to = path("assembly.glb")] { writeGltf(panels, to); }},
+      {"export BREP, in parallel",
+       [&, to = path("assembly.brep")] { writeShape(assemble(d.arrangement, d.patches, foldAngle_), to); }},
+      {"export PDF, in parallel",
+       [&, to = path("sheets.pdf")] { writeSheetsPdf(sheets, d.layout.sheet, to); }},
+      {"export sheets PNG, in parallel",
+       [&, to = path("sheets.png")] { writeSheetsPng(sheets, d.layout.sheet, to); }},
+      {"export report, in parallel",
+       [&, to = path("report.json")] { writeJson(reportJson(model, params, d), to); }},
+  };
+  for (size_t k = 0; k < sheets.size(); ++k)
+    work.push_back(
+        {"export SVG + DXF, in parallel", [&, k, svg = path(sheetFileName(static_cast<int>(k), ".svg")),
+                                           dxf = path(sheetFileName(static_cast<int>(k), ".dxf"))] {
+           writeSheetSvg(sheets[k], d.layout.sheet, svg);
+           writeSheetDxf(sheets[k], d.layout.sheet, dxf);
+         }});
+  std::vector<double> ms(work.size());
+  parallelFor(work.size(), [&](size_t k) {
+    const auto begin = std::chrono::steady_clock::now();
+    work[k].write();
+    ms[k] = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - begin).count();
+  });
   std::error_code failed;
   for (const char* extension : {".svg", ".dxf"})
     for (int k = static_cast<int>(sheets.size());; ++k) {
@@ -97,14 +121,15 @@ DesignFiles DesignFilesWriter::finish(const Model& model, const DesignParams& pa
         throw Error(ErrorKind::Io, "cannot remove the stale " + stale.string() + ": " + failed.message());
       files.removed.push_back(stale.filename().string());
     }
-  clock.lap("export SVG + DXF");
-  writeShape(assemble(d.arrangement, d.patches, foldAngle_), path("assembly.brep"));
-  clock.lap("export BREP");
-  const std::vector<Panel3> panels = assemblyPanels(d.arrangement, d.patches, foldAngle_);
-  writeGltf(panels, path("assembly.glb"));
-  clock.lap("export glTF");
-  writeAssemblyPng(panels, path("assembly.png"));
-  clock.lap("export assembly PNG");
+  clock.lap("export files");
+  // Each file's own time, summed per kind (the sheets' SVG and DXF together).
+  std::vector<StageTime> own;
+  for (size_t k = 0; k < work.size(); ++k) {
+    auto same =
+        std::find_if(own.begin(), own.end(), [&](const StageTime& t) { return t.stage == work[k].stage; });
+    if (same == own.end()) own.push_back({work[k].stage, 0, /*alongside=*/true}), same = own.end() - 1;
+    same->ms += ms[k];
+  }
   const double stepMs = step_.get();
   const std::string step = path("assembly.step");
   fs::rename(stepFile_, step, failed);
@@ -114,6 +139,7 @@ DesignFiles DesignFilesWriter::finish(const Model& model, const DesignParams& pa
     throw Error(ErrorKind::Io, "cannot write " + step + ": " + failed.message());
   }
   clock.lap("export STEP, waiting for it");
+  timings.insert(timings.end(), own.begin(), own.end());
   timings.push_back({"export STEP, in parallel", stepMs, /*alongside=*/true});
   writeJson(timingsJson(timings), path("timings.json"));
   return files;

@@ -4,6 +4,7 @@
 // Shared by the CLI and the FreeCAD workbench so both write the same files.
 #pragma once
 
+#include <functional>
 #include <future>
 #include <string>
 #include <vector>
@@ -28,9 +29,10 @@ struct DesignFiles {
 // file whole. Sheet files beyond this design's sheet count (sheet-N.svg/.dxf only) are
 // removed so a stale sheet is never cut by mistake. timings.json, written last, holds
 // `before` (the caller's own stages, such as reading the model), the design's stages and
-// what writing each file cost ("export ..."); "export STEP, in parallel" is the STEP
-// thread's own time and "export STEP, waiting for it" what it added to the run (the others
-// add up to the wall time). Throws Io.
+// what writing the files cost: "export files" is the wall time of writing all but the
+// STEP file, on all cores, "export X, in parallel" each kind's own time within it (or, for
+// STEP, on its own thread), "export STEP, waiting for it" what the STEP file added at the
+// end. The stages not marked "in parallel" add up to the wall time. Throws Io.
 class DesignFilesWriter {
  public:
   DesignFilesWriter(std::string folder, double foldAngleDegrees);
