@@ -4,6 +4,7 @@
 // from run to run.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <regex>
@@ -85,6 +86,37 @@ TEST(Labels, NameNeverOnAnIslandSmallerThanItsBox) {
   const Label l = placeName(paper, "U19");
   ASSERT_GT(l.height, 0);
   EXPECT_TRUE(box(l).subtract(paper).empty()) << "at " << l.at.x << ", " << l.at.y << " height " << l.height;
+}
+
+// Partner labels search only a window beside their slot and keep the pieces of it that are
+// paper. A window wholly inside a hole has none; an island in that hole is paper and may
+// carry a label, but only with the whole box on it.
+TEST(Labels, PartnerWindowKeepsOnlyPaper) {
+  auto square = [](double x, double y, double side, bool hole = false) {
+    Region2d::Loop l{{x, y}, {x + side, y}, {x + side, y + side}, {x, y + side}};
+    if (hole) std::reverse(l.begin(), l.end());
+    return l;
+  };
+  const LabelSpot spot{"V7", 50, {40, 60}, 50, 0.5};
+  const Region2d frame =
+      Region2d::fromLoops({square(0, 0, 100), square(20, 20, 60, true)}, FillRule::NonZero);
+  int missing = 0;
+  EXPECT_TRUE(placePartners(frame, {spot}, {}, 3.5, missing).empty());
+  EXPECT_EQ(missing, 1);
+
+  const Region2d islands = Region2d::fromLoops(
+      {square(0, 0, 100), square(20, 20, 60, true), square(50.5, 45, 4.5)}, FillRule::NonZero);
+  missing = 0;
+  const std::vector<Label> labels = placePartners(islands, {spot}, {}, 3.5, missing);
+  ASSERT_EQ(labels.size(), 1u);
+  EXPECT_EQ(missing, 0);
+  EXPECT_TRUE(box(labels[0]).subtract(islands).empty()) << "at " << labels[0].at.x << ", " << labels[0].at.y;
+  EXPECT_GT(labels[0].at.x, 50.5);
+
+  // A label already there keeps the next one off its box.
+  missing = 0;
+  const std::vector<Label> next = placePartners(islands, {spot}, labels, 3.5, missing);
+  for (const Label& l : next) EXPECT_TRUE(box(l).intersect(box(labels[0])).empty());
 }
 
 // Text on a sheet reads left to right (or bottom to top) whichever way nesting turned its

@@ -2,6 +2,7 @@
 #include "layout/labels.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <map>
 
@@ -63,43 +64,83 @@ Region2d simplified(const Region2d& paper) {
   return Region2d::fromPaths(paths, FillRule::NonZero);
 }
 
-Region2d rect(Vec2 centre, double halfW, double halfH) {
-  return Region2d::fromLoops({{{centre.x - halfW, centre.y - halfH},
-                               {centre.x + halfW, centre.y - halfH},
-                               {centre.x + halfW, centre.y + halfH},
-                               {centre.x - halfW, centre.y + halfH}}});
-}
-
-// Where the centre of a halfW x halfH box can go so the box stays in `region`: the region
-// minus the band its boundary sweeps with the box (an exact Minkowski erosion). The sweep
-// only catches boxes that some boundary crosses; a loop lying wholly inside the box (a
-// small island or hole) is caught by the box around one of its vertices.
-Region2d erodeByBox(const Region2d& region, double halfW, double halfH) {
-  if (region.empty()) return {};
-  const cInt w = Region2d::toUnits(halfW), h = Region2d::toUnits(halfH);
-  const Path box = {{-w, -h}, {w, -h}, {w, h}, {-w, h}};
-  Paths sweep;
-  for (Path loop : region.paths()) {
-    if (loop.empty()) continue;
-    loop.push_back(loop.front());  // swept as a closed polyline, its inside left alone
-    Paths band;
-    ClipperLib::MinkowskiSum(box, loop, band, false);
-    sweep.insert(sweep.end(), band.begin(), band.end());
-    Path around = box;
-    for (IntPoint& q : around) q = {q.X + loop.front().X, q.Y + loop.front().Y};
-    sweep.push_back(around);
+// Integer box [lo, hi] in Clipper units.
+struct UnitBox {
+  IntPoint lo, hi;
+  bool meets(const UnitBox& o) const {
+    return lo.X <= o.hi.X && o.lo.X <= hi.X && lo.Y <= o.hi.Y && o.lo.Y <= hi.Y;
   }
-  return region.subtract(Region2d::fromPaths(sweep, FillRule::NonZero));
+};
+
+Path boxPath(const UnitBox& b) {
+  return {{b.lo.X, b.lo.Y}, {b.hi.X, b.lo.Y}, {b.hi.X, b.hi.Y}, {b.lo.X, b.hi.Y}};
 }
 
-bool contains(const Region2d& region, Vec2 p) {
-  const IntPoint q{Region2d::toUnits(p.x), Region2d::toUnits(p.y)};
+// What an axis-aligned box of half size (w, h) covers as its centre runs along the edge
+// a -> b: the convex hull of the box at both ends (a hexagon, or a rectangle for an
+// axis-aligned edge). One convex piece per edge, where ClipperLib::MinkowskiSum makes four
+// quadrilaterals and unites them: the same set for a quarter of the edges to sweep.
+Path sweptBox(IntPoint a, IntPoint b, cInt w, cInt h) {
+  std::array<IntPoint, 8> p = {{{a.X - w, a.Y - h},
+                                {a.X + w, a.Y - h},
+                                {a.X + w, a.Y + h},
+                                {a.X - w, a.Y + h},
+                                {b.X - w, b.Y - h},
+                                {b.X + w, b.Y - h},
+                                {b.X + w, b.Y + h},
+                                {b.X - w, b.Y + h}}};
+  std::sort(p.begin(), p.end(),
+            [](const IntPoint& u, const IntPoint& v) { return u.X < v.X || (u.X == v.X && u.Y < v.Y); });
+  // Andrew's monotone chain, counter-clockwise; collinear points dropped. Coordinates stay
+  // below 2^30 units (Region2d), so the products fit in 64 bits.
+  const auto cross = [](const IntPoint& o, const IntPoint& u, const IntPoint& v) {
+    return (u.X - o.X) * (v.Y - o.Y) - (u.Y - o.Y) * (v.X - o.X);
+  };
+  Path hull(16);
+  size_t k = 0;
+  for (size_t i = 0; i < p.size(); ++i) {
+    while (k >= 2 && cross(hull[k - 2], hull[k - 1], p[i]) <= 0) --k;
+    hull[k++] = p[i];
+  }
+  for (size_t i = p.size() - 1, lower = k + 1; i-- > 0;) {
+    while (k >= lower && cross(hull[k - 2], hull[k - 1], p[i]) <= 0) --k;
+    hull[k++] = p[i];
+  }
+  hull.resize(k - 1);  // the last point repeats the first
+  return hull;
+}
+
+// The bands the boundary of `region` sweeps with a box of half size (w, h), for the edges
+// whose band can reach `near` (all of them when there is no `near`). A box centred at p
+// lies in the region exactly when p is in the region and outside every band: a box the
+// boundary does not cross holds either none or all of a loop, and then it holds the
+// loop's vertices, which the bands of that loop's edges cover.
+Paths sweptBands(const Region2d& region, cInt w, cInt h, const UnitBox* near) {
+  Paths bands;
+  for (const Path& loop : region.paths())
+    for (size_t i = 0, n = loop.size(); i < n; ++i) {
+      const IntPoint a = loop[i], b = loop[(i + 1) % n];
+      if (near) {
+        const UnitBox reach{{std::min(a.X, b.X) - w, std::min(a.Y, b.Y) - h},
+                            {std::max(a.X, b.X) + w, std::max(a.Y, b.Y) + h}};
+        if (!reach.meets(*near)) continue;
+      }
+      bands.push_back(sweptBox(a, b, w, h));
+    }
+  return bands;
+}
+
+bool contains(const Region2d& region, IntPoint q) {
   int depth = 0;
   for (const Path& loop : region.paths()) {
     const int in = ClipperLib::PointInPolygon(q, loop);
     if (in != 0) depth += ClipperLib::Orientation(loop) ? 1 : -1;
   }
   return depth > 0;
+}
+
+bool contains(const Region2d& region, Vec2 p) {
+  return contains(region, IntPoint{Region2d::toUnits(p.x), Region2d::toUnits(p.y)});
 }
 
 // The deepest point of a region, found by eroding it until little is left.
@@ -151,36 +192,47 @@ Vec2 halfSize(const std::string& text, double height, bool vertical) {
   return vertical ? Vec2{h, w} : Vec2{w, h};
 }
 
-// The paper a label of half size `half` may have its centre on: away from every cut, clear
-// of the labels already placed, and inside `window` when one is given. The paper is
-// clipped to the window first (grown by the box and the margin, so the clipped edges erode
-// only outside the window): eroding a small piece is much cheaper than the whole patch.
-Region2d freeFor(const Region2d& paper, const std::vector<Label>& taken, Vec2 half, const Region2d* window) {
-  Region2d near = paper;
-  if (window) {
-    const Box2 w = window->bounds();
-    const Vec2 grow{half.x + kEdgeMargin + 1, half.y + kEdgeMargin + 1};
-    near = paper.intersect(rect({(w.min.x + w.max.x) / 2, (w.min.y + w.max.y) / 2},
-                                (w.max.x - w.min.x) / 2 + grow.x, (w.max.y - w.min.y) / 2 + grow.y));
-  }
-  Region2d room = erodeByBox(erode(near, kEdgeMargin), half.x, half.y);
-  if (window) room = room.intersect(*window);
-  // Labels already set keep their distance: one subtraction of the boxes that reach the
-  // room at all, not one per label (a patch can carry dozens).
-  if (room.empty() || taken.empty()) return room;
-  const Box2 b = room.bounds();
-  std::vector<Region2d::Loop> boxes;
+// The paper a label of half size `half` may have its centre on: inside `inner` (the paper
+// eroded by the edge margin) with its whole box, clear of the labels already placed, and
+// inside `window` when one is given. A window needs only the boundary near it: the window
+// minus the bands of the nearby edges and the labels' boxes falls into pieces that each lie
+// wholly inside or wholly outside `inner` (no band crosses them, and a box that stays clear
+// of the boundary cannot change sides), so one vertex of each piece decides it.
+Region2d freeFor(const Region2d& inner, const std::vector<Label>& taken, Vec2 half, const Box2* window) {
+  if (inner.empty()) return {};
+  const cInt w = Region2d::toUnits(half.x), h = Region2d::toUnits(half.y);
+  UnitBox near;
+  if (window)
+    near = {{Region2d::toUnits(window->min.x), Region2d::toUnits(window->min.y)},
+            {Region2d::toUnits(window->max.x), Region2d::toUnits(window->max.y)}};
+  Paths clip = sweptBands(inner, w, h, window ? &near : nullptr);
+  // Labels already set keep their distance: their boxes, grown by this one and the gap,
+  // join the bands (only those that reach the window).
   for (const Label& l : taken) {
     const Vec2 other = halfSize(l.text, l.height, l.vertical);
     const double hx = other.x + half.x + kGap, hy = other.y + half.y + kGap;
-    if (l.at.x + hx < b.min.x || l.at.x - hx > b.max.x || l.at.y + hy < b.min.y || l.at.y - hy > b.max.y)
-      continue;
-    boxes.push_back({{l.at.x - hx, l.at.y - hy},
-                     {l.at.x + hx, l.at.y - hy},
-                     {l.at.x + hx, l.at.y + hy},
-                     {l.at.x - hx, l.at.y + hy}});
+    const UnitBox box{{Region2d::toUnits(l.at.x - hx), Region2d::toUnits(l.at.y - hy)},
+                      {Region2d::toUnits(l.at.x + hx), Region2d::toUnits(l.at.y + hy)}};
+    if (!window || box.meets(near)) clip.push_back(boxPath(box));
   }
-  return boxes.empty() ? room : room.subtract(Region2d::fromLoops(boxes, FillRule::NonZero));
+  ClipperLib::Clipper clipper;
+  clipper.AddPaths(clip, ClipperLib::ptClip, true);
+  if (!window) {
+    clipper.AddPaths(inner.paths(), ClipperLib::ptSubject, true);
+    Paths room;
+    clipper.Execute(ClipperLib::ctDifference, room, ClipperLib::pftNonZero, ClipperLib::pftNonZero);
+    return Region2d::fromPaths(room, FillRule::NonZero);
+  }
+  clipper.AddPath(boxPath(near), ClipperLib::ptSubject, true);
+  ClipperLib::PolyTree pieces;
+  clipper.Execute(ClipperLib::ctDifference, pieces, ClipperLib::pftNonZero, ClipperLib::pftNonZero);
+  Paths room;
+  for (const ClipperLib::PolyNode* node = pieces.GetFirst(); node; node = node->GetNext()) {
+    if (node->IsHole() || node->Contour.empty() || !contains(inner, node->Contour.front())) continue;
+    room.push_back(node->Contour);
+    for (const ClipperLib::PolyNode* hole : node->Childs) room.push_back(hole->Contour);
+  }
+  return Region2d::fromPaths(room, FillRule::NonZero);
 }
 
 }  // namespace
@@ -209,20 +261,24 @@ Label setLabel(const std::string& text, Vec2 at, double height, bool vertical) {
 }
 
 Label placeName(const Region2d& paperIn, const std::string& id) {
-  const Region2d paper = simplified(paperIn);
-  for (const double height : {8.0, 6.0, 5.0, 4.0, 3.0, 2.5, 2.0, 1.6, 1.3, 1.0})
+  // The margin is eroded once: every box size searches the same inner paper.
+  const Region2d inner = erode(simplified(paperIn), kEdgeMargin);
+  for (const double height : {8.0, 6.0, 5.0, 4.0, 3.0, 2.5, 2.0, 1.6, 1.3, 1.0}) {
+    // No box fits where a disc as wide as the box's short side does not: a cheap test first.
+    // (Eroding twice rounds the corners a little less than once by the sum, so this never
+    // calls a region empty that a box fits.)
+    if (erode(inner, height / 2).empty()) continue;
     for (const bool vertical : {false, true}) {
-      // No box fits where a disc as wide as the box's short side does not: a cheap test first.
-      if (erode(paper, kEdgeMargin + height / 2).empty()) continue;
-      const Region2d room = freeFor(paper, {}, halfSize(id, height, vertical), nullptr);
+      const Region2d room = freeFor(inner, {}, halfSize(id, height, vertical), nullptr);
       if (!room.empty()) return setLabel(id, deepestPoint(room), height, vertical);
     }
+  }
   return Label{id, {}, 0, false, {}};
 }
 
 std::vector<Label> placePartners(const Region2d& paperIn, const std::vector<LabelSpot>& spots,
                                  const std::vector<Label>& taken, double maxHeight, int& missing) {
-  const Region2d paper = simplified(paperIn);
+  const Region2d inner = erode(simplified(paperIn), kEdgeMargin);
   std::vector<Label> placed, all = taken;
   for (const LabelSpot& s : spots) {
     bool done = false;
@@ -230,8 +286,9 @@ std::vector<Label> placePartners(const Region2d& paperIn, const std::vector<Labe
       const Vec2 half = halfSize(s.text, height, false);
       // Beside the slot, over the hinge's stretch of the line, on either side.
       const double reach = s.slotWidth / 2 + kGap + 2 * half.x + kGap;
-      const Region2d near = rect({s.x, (s.w.lo + s.w.hi) / 2}, reach, (s.w.hi - s.w.lo) / 2 + half.y);
-      const Region2d room = freeFor(paper, all, half, &near);
+      const double mid = (s.w.lo + s.w.hi) / 2, halfSpan = (s.w.hi - s.w.lo) / 2 + half.y;
+      const Box2 near{{s.x - reach, mid - halfSpan}, {s.x + reach, mid + halfSpan}, false};
+      const Region2d room = freeFor(inner, all, half, &near);
       if (room.empty()) continue;
       const double side = s.slotWidth / 2 + kGap + half.x;
       const Vec2 right = nearestPoint(room, {s.x + side, s.y}), left = nearestPoint(room, {s.x - side, s.y});
