@@ -2,7 +2,6 @@
 #include "layout/labels.hpp"
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <map>
 
@@ -76,38 +75,25 @@ Path boxPath(const UnitBox& b) {
   return {{b.lo.X, b.lo.Y}, {b.hi.X, b.lo.Y}, {b.hi.X, b.hi.Y}, {b.lo.X, b.hi.Y}};
 }
 
-// What an axis-aligned box of half size (w, h) covers as its centre runs along the edge
-// a -> b: the convex hull of the box at both ends (a hexagon, or a rectangle for an
-// axis-aligned edge). One convex piece per edge, where ClipperLib::MinkowskiSum makes four
-// quadrilaterals and unites them: the same set for a quarter of the edges to sweep.
-Path sweptBox(IntPoint a, IntPoint b, cInt w, cInt h) {
-  std::array<IntPoint, 8> p = {{{a.X - w, a.Y - h},
-                                {a.X + w, a.Y - h},
-                                {a.X + w, a.Y + h},
-                                {a.X - w, a.Y + h},
-                                {b.X - w, b.Y - h},
-                                {b.X + w, b.Y - h},
-                                {b.X + w, b.Y + h},
-                                {b.X - w, b.Y + h}}};
-  std::sort(p.begin(), p.end(),
-            [](const IntPoint& u, const IntPoint& v) { return u.X < v.X || (u.X == v.X && u.Y < v.Y); });
-  // Andrew's monotone chain, counter-clockwise; collinear points dropped. Coordinates stay
-  // below 2^30 units (Region2d), so the products fit in 64 bits.
-  const auto cross = [](const IntPoint& o, const IntPoint& u, const IntPoint& v) {
-    return (u.X - o.X) * (v.Y - o.Y) - (u.Y - o.Y) * (v.X - o.X);
-  };
-  Path hull(16);
-  size_t k = 0;
-  for (size_t i = 0; i < p.size(); ++i) {
-    while (k >= 2 && cross(hull[k - 2], hull[k - 1], p[i]) <= 0) --k;
-    hull[k++] = p[i];
-  }
-  for (size_t i = p.size() - 1, lower = k + 1; i-- > 0;) {
-    while (k >= lower && cross(hull[k - 2], hull[k - 1], p[i]) <= 0) --k;
-    hull[k++] = p[i];
-  }
-  hull.resize(k - 1);  // the last point repeats the first
-  return hull;
+// What an axis-aligned box of half size (w, h) covers as its centre runs along a chain of
+// edges that all head into one quadrant (sx, sy = ±1: none goes left when sx > 0, none
+// down when sy > 0): the band between the chain traced by the box's two corners across the
+// heading, (sx w, -sy h) and (-sx w, sy h), closed by the box at either end. Above and
+// below any x the box reaches, the chain's highest and lowest points lie at the far ends
+// of its reach, so those two traces are exactly the band's top and bottom. One polygon
+// per run instead of a convex piece per edge: the overlaps Clipper has to resolve are
+// those between runs, not those of every edge with its dozens of short neighbours.
+void addRun(const Path& run, int sx, int sy, cInt w, cInt h, Paths& out) {
+  const cInt cx = sx * w, cy = sy * h;
+  Path band;
+  band.reserve(2 * run.size() + 2);
+  band.push_back({run.front().X - cx, run.front().Y - cy});
+  for (const IntPoint& a : run) band.push_back({a.X + cx, a.Y - cy});
+  band.push_back({run.back().X + cx, run.back().Y + cy});
+  for (size_t i = run.size(); i-- > 0;) band.push_back({run[i].X - cx, run[i].Y + cy});
+  // Counter-clockwise when heading up-right or down-left; a mirror image otherwise.
+  if (sx * sy < 0) std::reverse(band.begin(), band.end());
+  out.push_back(std::move(band));
 }
 
 // The bands the boundary of `region` sweeps with a box of half size (w, h), for the edges
@@ -117,16 +103,33 @@ Path sweptBox(IntPoint a, IntPoint b, cInt w, cInt h) {
 // loop's vertices, which the bands of that loop's edges cover.
 Paths sweptBands(const Region2d& region, cInt w, cInt h, const UnitBox* near) {
   Paths bands;
-  for (const Path& loop : region.paths())
+  Path run;
+  int sx = 0, sy = 0;  // the run's heading; 0 while its edges left it open
+  const auto flush = [&] {
+    if (run.size() >= 2) addRun(run, sx < 0 ? -1 : 1, sy < 0 ? -1 : 1, w, h, bands);
+    run.clear();
+    sx = sy = 0;
+  };
+  for (const Path& loop : region.paths()) {
     for (size_t i = 0, n = loop.size(); i < n; ++i) {
       const IntPoint a = loop[i], b = loop[(i + 1) % n];
       if (near) {
         const UnitBox reach{{std::min(a.X, b.X) - w, std::min(a.Y, b.Y) - h},
                             {std::max(a.X, b.X) + w, std::max(a.Y, b.Y) + h}};
-        if (!reach.meets(*near)) continue;
+        if (!reach.meets(*near)) {
+          flush();
+          continue;
+        }
       }
-      bands.push_back(sweptBox(a, b, w, h));
+      const int dx = (b.X > a.X) - (b.X < a.X), dy = (b.Y > a.Y) - (b.Y < a.Y);
+      if ((dx && sx && dx != sx) || (dy && sy && dy != sy)) flush();
+      if (run.empty()) run.push_back(a);
+      run.push_back(b);
+      if (dx) sx = dx;
+      if (dy) sy = dy;
     }
+    flush();
+  }
   return bands;
 }
 
