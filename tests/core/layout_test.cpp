@@ -119,6 +119,37 @@ TEST(Labels, PartnerWindowKeepsOnlyPaper) {
   for (const Label& l : next) EXPECT_TRUE(box(l).intersect(box(labels[0])).empty());
 }
 
+// Labels on a wavy ring, whose edges head every way: each label's box stays on the paper,
+// clear of its cuts by the margin, and of the other labels.
+TEST(Labels, OnCurvedPaperBoxesStayClearOfTheCuts) {
+  Region2d::Loop outer, hole;
+  for (int i = 0; i < 360; ++i) {
+    const double t = i * M_PI / 180, r = 30 + 3 * std::sin(7 * t), q = 9 + 1.5 * std::sin(5 * t);
+    outer.push_back({r * std::cos(t), r * std::sin(t)});
+    hole.push_back({q * std::cos(-t), q * std::sin(-t)});
+  }
+  const Region2d paper = Region2d::fromLoops({outer, hole}, FillRule::NonZero);
+  const Region2d clear = paper.offset(-0.59);  // the 0.6 mm margin, less rounding
+  const Label name = placeName(paper, "U12");
+  ASSERT_GT(name.height, 0);
+  EXPECT_TRUE(box(name).subtract(clear).empty()) << name.at.x << ", " << name.at.y;
+  std::vector<LabelSpot> spots;
+  for (double x = -27.5; x <= 27.5; x += 2.5)
+    for (const Interval& w : paper.intervalsOnLine({x, 0}, {0, 1}))
+      spots.push_back({"V" + std::to_string(spots.size()), x, w, (w.lo + w.hi) / 2, 0.5});
+  int missing = 0;
+  const std::vector<Label> labels = placePartners(paper, spots, {name}, 3.5, missing);
+  EXPECT_EQ(labels.size() + missing, spots.size());
+  EXPECT_GT(labels.size(), spots.size() / 2);
+  for (size_t i = 0; i < labels.size(); ++i) {
+    EXPECT_TRUE(box(labels[i]).subtract(clear).empty()) << labels[i].text;
+    EXPECT_TRUE(box(labels[i]).intersect(box(name)).empty()) << labels[i].text;
+    for (size_t j = 0; j < i; ++j)
+      EXPECT_TRUE(box(labels[i]).intersect(box(labels[j])).empty())
+          << labels[i].text << " " << labels[j].text;
+  }
+}
+
 // Text on a sheet reads left to right (or bottom to top) whichever way nesting turned its
 // patch: the "U" of "U1" comes before the "1".
 TEST(Labels, ReadUprightOnTheSheetWhateverThePatchRotation) {
