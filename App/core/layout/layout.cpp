@@ -2,6 +2,7 @@
 #include "layout/layout.hpp"
 
 #include <cmath>
+#include <future>
 
 #include "layout/labels.hpp"
 #include "pipeline/design.hpp"
@@ -38,14 +39,19 @@ Label upright(const Label& l, const Placement& at) {
 SheetLayout layOut(const Design& design, const SheetSpec& sheet) {
   SheetLayout layout;
   layout.sheet = sheet;
-  layout.patches = flattenPatches(design);
   std::vector<Region2d> outlines;
   std::vector<std::string> names;
-  for (const FlatPatch& p : layout.patches) {
-    outlines.push_back(p.outline);
-    names.push_back(p.id);
+  for (size_t k = 0; k < design.patches.size(); ++k) {
+    outlines.push_back(design.patches[k].outline);
+    names.push_back(patchId(design.arrangement.scaffold, static_cast<int>(k)));
   }
-  layout.packing = nestOnSheets(outlines, names, sheet);
+  // Nesting reads only the outlines, not the labels: it runs on a thread of its own while
+  // the patches are flattened and labelled on every core. Its result is the same whatever
+  // the schedule; a flattening error still comes first (the future waits for the nest).
+  std::future<Packing> nested =
+      std::async(std::launch::async, [&] { return nestOnSheets(outlines, names, sheet); });
+  layout.patches = flattenPatches(design);
+  layout.packing = nested.get();
   layout.shelf = shelfPack(outlines, names, sheet);
   return layout;
 }
