@@ -166,10 +166,11 @@ std::vector<FlatPatch> flattenPatches(const Design& d) {
     flat.outline = d.patches[k].outline;
     flat.cut = cutLoops(kerfCompensated(d.patches[k].shape, d.realization.params.kerf),
                         PlaneMap{plane.xAxis, plane.yAxis});
-    flat.name = placeName(flat.outline, flat.id);
+    const LabelPaper paper = labelPaper(flat.outline);
+    flat.name = placeName(paper, flat.id);
     const double partnerHeight = std::max(flat.name.height * 0.6, 1.0);
     flat.partners =
-        placePartners(flat.outline, partnerSpots(d, k), {flat.name}, partnerHeight, flat.partnersMissing);
+        placePartners(paper, partnerSpots(d, k), {flat.name}, partnerHeight, flat.partnersMissing);
   });
   return out;
 }

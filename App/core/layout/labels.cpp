@@ -46,10 +46,12 @@ using ClipperLib::Paths;
 // Labels need no micrometres: erosions here round their corners to 0.02 mm (Region2d's
 // own offset keeps 1 µm, which makes every round corner hundreds of vertices).
 constexpr double kLabelTolerance = 0.02;  // mm
+// For tests that only ask whether anything is left (see placeName).
+constexpr double kCoarseTolerance = 0.25;  // mm
 
-Region2d erode(const Region2d& region, double mm) {
+Region2d erode(const Region2d& region, double mm, double tolerance = kLabelTolerance) {
   ClipperLib::ClipperOffset offsetter;
-  offsetter.ArcTolerance = kLabelTolerance * Region2d::kUnitsPerMm;
+  offsetter.ArcTolerance = tolerance * Region2d::kUnitsPerMm;
   offsetter.AddPaths(region.paths(), ClipperLib::jtRound, ClipperLib::etClosedPolygon);
   Paths out;
   offsetter.Execute(out, -mm * Region2d::kUnitsPerMm);
@@ -146,19 +148,32 @@ bool contains(const Region2d& region, Vec2 p) {
   return contains(region, IntPoint{Region2d::toUnits(p.x), Region2d::toUnits(p.y)});
 }
 
+// The part of `region` inside the box grown by `grow` mm on every side.
+Region2d near(const Region2d& region, const Box2& box, double grow) {
+  const UnitBox b{{Region2d::toUnits(box.min.x - grow), Region2d::toUnits(box.min.y - grow)},
+                  {Region2d::toUnits(box.max.x + grow), Region2d::toUnits(box.max.y + grow)}};
+  return region.intersect(Region2d::fromPaths({boxPath(b)}, FillRule::NonZero));
+}
+
 // The deepest point of a region, found by eroding it until little is left.
 Vec2 deepestPoint(const Region2d& region) {
   const Box2 b = region.bounds();
   double lo = 0, hi = std::max(b.max.x - b.min.x, b.max.y - b.min.y) / 2;
   Region2d core = region;
+  bool deeper = false;  // core is an erosion of the region, not the region itself
   for (int i = 0; i < 12; ++i) {
     const double mid = (lo + hi) / 2;
-    const Region2d eroded = erode(region, mid);
+    // Deeper than the last core, the erosion lies inside that core (give or take the
+    // rounding of its corners), and only the boundary within `mid` of it shapes it: the
+    // region clipped a millimetre beyond that erodes to the same polygon, from far fewer
+    // corners to round.
+    const Region2d eroded = erode(deeper ? near(region, core.bounds(), mid + 1) : region, mid);
     if (eroded.empty()) {
       hi = mid;
     } else {
       lo = mid;
       core = eroded;
+      deeper = true;
     }
   }
   // The centroid of the largest remaining piece, if it is inside it; else a vertex.
@@ -263,14 +278,28 @@ Label setLabel(const std::string& text, Vec2 at, double height, bool vertical) {
   return label;
 }
 
-Label placeName(const Region2d& paperIn, const std::string& id) {
-  // The margin is eroded once: every box size searches the same inner paper.
-  const Region2d inner = erode(simplified(paperIn), kEdgeMargin);
+LabelPaper labelPaper(const Region2d& paper) {
+  return {erode(simplified(paper), kEdgeMargin)};
+}
+
+Label placeName(const Region2d& paper, const std::string& id) {
+  return placeName(labelPaper(paper), id);
+}
+
+std::vector<Label> placePartners(const Region2d& paper, const std::vector<LabelSpot>& spots,
+                                 const std::vector<Label>& taken, double maxHeight, int& missing) {
+  return placePartners(labelPaper(paper), spots, taken, maxHeight, missing);
+}
+
+Label placeName(const LabelPaper& paper, const std::string& id) {
+  // Every box size searches the same inner paper, eroded once.
+  const Region2d& inner = paper.inner;
   for (const double height : {8.0, 6.0, 5.0, 4.0, 3.0, 2.5, 2.0, 1.6, 1.3, 1.0}) {
     // No box fits where a disc as wide as the box's short side does not: a cheap test first.
-    // (Eroding twice rounds the corners a little less than once by the sum, so this never
-    // calls a region empty that a box fits.)
-    if (erode(inner, height / 2).empty()) continue;
+    // Its round corners may be coarse: a rounded erosion's corners lie on the true arcs and
+    // cut inside them, so it only keeps more than the exact erosion, never less, and calls
+    // no region empty that a disc, let alone a box, fits (freeFor decides the rest).
+    if (erode(inner, height / 2, kCoarseTolerance).empty()) continue;
     for (const bool vertical : {false, true}) {
       const Region2d room = freeFor(inner, {}, halfSize(id, height, vertical), nullptr);
       if (!room.empty()) return setLabel(id, deepestPoint(room), height, vertical);
@@ -279,9 +308,9 @@ Label placeName(const Region2d& paperIn, const std::string& id) {
   return Label{id, {}, 0, false, {}};
 }
 
-std::vector<Label> placePartners(const Region2d& paperIn, const std::vector<LabelSpot>& spots,
+std::vector<Label> placePartners(const LabelPaper& paper, const std::vector<LabelSpot>& spots,
                                  const std::vector<Label>& taken, double maxHeight, int& missing) {
-  const Region2d inner = erode(simplified(paperIn), kEdgeMargin);
+  const Region2d& inner = paper.inner;
   std::vector<Label> placed, all = taken;
   for (const LabelSpot& s : spots) {
     bool done = false;

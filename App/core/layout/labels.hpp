@@ -27,11 +27,21 @@ struct LabelSpot {
   double slotWidth = 0;
 };
 
+// Where a label's box may lie on a patch: its paper less a margin along every cut. Both
+// placers start from it; a patch given to both computes it once.
+struct LabelPaper {
+  Region2d inner;
+};
+LabelPaper labelPaper(const Region2d& paper);
+
 // The patch id at the deepest spot that holds it (up to 8 mm high), horizontal if it fits
 // there, else upright; empty strokes when no box of 1 mm fits.
+Label placeName(const LabelPaper& paper, const std::string& id);
 Label placeName(const Region2d& paper, const std::string& id);
 // Partner labels beside each hinge, clear of each other and of `taken` labels; spots with
 // no room are left out and counted in `missing`.
+std::vector<Label> placePartners(const LabelPaper& paper, const std::vector<LabelSpot>& spots,
+                                 const std::vector<Label>& taken, double maxHeight, int& missing);
 std::vector<Label> placePartners(const Region2d& paper, const std::vector<LabelSpot>& spots,
                                  const std::vector<Label>& taken, double maxHeight, int& missing);
 
