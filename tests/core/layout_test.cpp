@@ -88,6 +88,23 @@ TEST(Labels, NameNeverOnAnIslandSmallerThanItsBox) {
   EXPECT_TRUE(box(l).subtract(paper).empty()) << "at " << l.at.x << ", " << l.at.y << " height " << l.height;
 }
 
+// The name goes to the deepest part of the paper: on a dumbbell, the middle of the larger
+// disc, not the smaller one or the bar between them, nor drawn towards the lobe beside it.
+TEST(Labels, NameAtTheDeepestSpot) {
+  auto disc = [](Vec2 c, double r) {
+    Region2d::Loop l;
+    for (int i = 0; i < 180; ++i)
+      l.push_back({c.x + r * std::cos(i * M_PI / 90), c.y + r * std::sin(i * M_PI / 90)});
+    return l;
+  };
+  const Region2d::Loop bar{{0, -2}, {60, -2}, {60, 2}, {0, 2}};
+  const Region2d paper =
+      Region2d::fromLoops({disc({0, 0}, 12), bar, disc({60, 0}, 20), disc({78, 0}, 14)}, FillRule::NonZero);
+  const Label l = placeName(paper, "V3");
+  EXPECT_EQ(l.height, 8);
+  EXPECT_LT(distance(l.at, {60, 0}), 0.25) << l.at.x << ", " << l.at.y;  // 0.15 mm: the box is no disc
+}
+
 // Partner labels search only a window beside their slot and keep the pieces of it that are
 // paper. A window wholly inside a hole has none; an island in that hole is paper and may
 // carry a label, but only with the whole box on it.
