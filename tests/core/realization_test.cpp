@@ -140,6 +140,43 @@ TEST(Slots, RoundEndsStayWithinTheSlot) {
   EXPECT_LT(b.slotted[0].area() - a.slotted[0].area(), round.width() * round.width());
 }
 
+// The opened piece count skips growing the eroded region back when the eroded pieces
+// decide it alone; it must agree with growing back on the cases where they nearly do not.
+TEST(Slots, OpenedPieceCountAgreesWithGrowingBack) {
+  const double neck = 0.25, crumb = 0.5;
+  const auto disc = [](double cx, double r) { return circle(cx, 0, r); };
+  struct Case {
+    const char* name;
+    Region2d region;
+    int pieces;
+  };
+  const Region2d squares = rect(0, 0, 10, 10).unite(rect(11, 0, 21, 10));
+  const std::vector<Case> cases = {
+      {"one square", rect(0, 0, 10, 10), 1},
+      {"bridge thinner than 2 neck", squares.unite(rect(9, 4.85, 12, 5.15)), 2},
+      {"bridge wider than 2 neck", squares.unite(rect(9, 4.7, 12, 5.3)), 1},
+      // Two discs overlapping in a waist 0.32 mm wide: eroded, they are two discs 0.495 mm
+      // apart, which meet again when grown back by 0.25 mm.
+      {"hourglass", Region2d::fromLoops({disc(0, 5), disc(9.995, 5)}, FillRule::NonZero), 1},
+      {"hourglass parted", Region2d::fromLoops({disc(0, 5), disc(10.05, 5)}, FillRule::NonZero), 2},
+      // A crumb left by erosion counts when it grows back to 0.5 mm² or more.
+      {"small square too small", rect(0, 0, 10, 10).unite(rect(20, 0, 20.6, 0.6)), 1},
+      {"small square big enough", rect(0, 0, 10, 10).unite(rect(20, 0, 20.8, 0.8)), 2},
+      {"small square close by", rect(0, 0, 10, 10).unite(rect(10.3, 0, 11.1, 0.8)), 2},
+      // An island in a hole: the boxes overlap, the pieces are far apart.
+      {"island in a hole", annulus(0, 0, 10, 20).unite(rect(-3, -3, 3, 3)), 2},
+      {"island near the wall", annulus(0, 0, 10, 20).unite(rect(-1, -3, 1, 9.7)), 2},
+      // Two interleaved combs, 0.6 mm apart: boxes overlap, pieces stay apart.
+      {"combs",
+       rect(0, 0, 1, 20).unite(rect(0, 0, 20, 1)).unite(rect(1.6, 1.6, 20, 2.6)).unite(rect(19, 1.6, 20, 20)),
+       2},
+  };
+  for (const Case& c : cases) {
+    EXPECT_EQ(openedPieceCountFull(c.region, neck, crumb), c.pieces) << c.name;
+    EXPECT_EQ(openedPieceCount(c.region, neck, crumb), c.pieces) << c.name;
+  }
+}
+
 // Slotted patches of arranged solids: no interlock left, no patch in pieces, and the paper
 // promised beside each holding slot is there.
 void expectRealizable(const TopoDS_Shape& shape, int slices = 48) {

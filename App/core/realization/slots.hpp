@@ -76,6 +76,12 @@ SlotShapes slotShapes(const std::vector<SlotCut>& cuts, const SlotParams& params
 // The region the strips clear.
 Region2d slotRegion(const std::vector<SlotCut>& cuts, const SlotParams& params);
 
+// Pieces of at least `crumb` mm² left when the region is opened by `neck` mm (eroded, then
+// grown back): a bridge narrower than 2 neck is cut. openedPieceCountFull always grows the
+// region back; openedPieceCount skips that when the eroded pieces decide the count alone.
+int openedPieceCount(const Region2d& region, double neck, double crumb);
+int openedPieceCountFull(const Region2d& region, double neck, double crumb);
+
 // The slotted patch: shape minus its slots. Crumbs (pieces smaller than a slot-wide square
 // or 0.5 mm², whichever is larger) fall out when cut and are dropped. `pieces` is set to the
 // number of pieces that remain, which must be 1; a bridge narrower than the material
