@@ -57,6 +57,22 @@ RealizationInput handMade(const std::vector<PatchShape>& patches) {
   return in;
 }
 
+// The search keeps patch states computed for earlier moves and computes them on both
+// cores; the ones it ends with must be exactly what the final slots give afresh.
+void expectStatesMatchSlots(const RealizationInput& in, const Realization& r) {
+  for (int p = 0; p < static_cast<int>(in.patches.size()); ++p) {
+    const std::vector<SlotCut> cuts = planSlots(in.patches[p].shape, patchHinges(in, r.slots, p), r.params);
+    ASSERT_EQ(cuts.size(), r.cuts[p].size()) << "patch " << p;
+    for (size_t k = 0; k < cuts.size(); ++k) {
+      EXPECT_EQ(cuts[k].x, r.cuts[p][k].x);
+      EXPECT_EQ(cuts[k].y.lo, r.cuts[p][k].y.lo);
+      EXPECT_EQ(cuts[k].y.hi, r.cuts[p][k].y.hi);
+    }
+    const SlotCutter cutter(in.patches[p].shape, r.params, in.tolerance);
+    EXPECT_EQ(cutter.cut(slotRegion(cuts, r.params), nullptr).paths(), r.slotted[p].paths()) << "patch " << p;
+  }
+}
+
 // Paper Fig. 3: two rings at right angles through each other, joined where they cross.
 // Slotting both joints the same way (U up, V down) leaves them linked.
 TEST(Interlock, CrossedRingsAreDetectedAndRepaired) {
@@ -71,6 +87,7 @@ TEST(Interlock, CrossedRingsAreDetectedAndRepaired) {
   EXPECT_EQ(r.splitPatches, 0);
   EXPECT_NE(r.slots[0], r.slots[1]) << "one joint slotted each way unlinks the rings";
   EXPECT_TRUE(r.assemblyChecked);
+  expectStatesMatchSlots(in, r);
 }
 
 // Two rings linked without touching (Prop. 3 counts pairs that share no hinge too). No slot
@@ -89,6 +106,7 @@ TEST(Interlock, LinkedRingsNeedACutThrough) {
   EXPECT_EQ(r.splitPatches, 0);
   EXPECT_EQ(r.slotted[0].holeCount(), 0) << "ring A is open now";
   EXPECT_EQ(r.slotted[0].components().size(), 1u);
+  expectStatesMatchSlots(in, r);
 }
 
 // The slots of one hinge: the U-patch cleared above the root, the V-patch below, each
@@ -187,7 +205,9 @@ void expectRealizable(const TopoDS_Shape& shape, int slices = 48) {
   const Model model = modelFromShape(shape, "test solid");
   const Arrangement a = arrange(model, params);
   ASSERT_TRUE(a.certificate.stable);
-  const Realization r = realize(realizationInput(a, model.meshDeflection), slots);
+  const RealizationInput in = realizationInput(a, model.meshDeflection);
+  const Realization r = realize(in, slots);
+  expectStatesMatchSlots(in, r);
   EXPECT_EQ(r.interlocks.remaining, 0);
   EXPECT_EQ(r.splitPatches, 0);
   for (const Region2d& p : r.slotted) EXPECT_EQ(p.components().size(), 1u);

@@ -4,12 +4,15 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
+#include <memory>
 #include <set>
 #include <tuple>
 
 #include "arrangement/arrange.hpp"
 #include "frames/hinge_table.hpp"
 #include "realization/interlock.hpp"
+#include "support/parallel.hpp"
 
 namespace sliceform {
 namespace {
@@ -50,6 +53,14 @@ double distanceToBoundary(const std::vector<Region2d::Loop>& loops, Vec2 p) {
   return best;
 }
 
+// One patch slotted with one choice of slots: what the search needs to know of it.
+struct PatchState {
+  std::vector<SlotCut> cuts;
+  Region2d slotted;
+  int pieces = 1;
+  HoleLoops holes;
+};
+
 class Search {
  public:
   Search(const RealizationInput& in, const SlotParams& params)
@@ -61,12 +72,10 @@ class Search {
     }
     slots_.assign(in.hinges.size(), params.uUp ? SlotPair::UpDown : SlotPair::DownUp);
     for (const PatchShape& p : in.patches) cutters_.emplace_back(p.shape, params, in.tolerance);
-    cuts_.resize(n_);
-    slotted_.resize(n_);
-    pieces_.assign(n_, 1);
-    holes_.resize(n_);
     locks_.assign(static_cast<size_t>(n_) * n_, 0);
-    for (int p = 0; p < n_; ++p) evaluatePatch(p);
+    state_.resize(n_);
+    parallelFor(static_cast<size_t>(n_),
+                [&](size_t p) { state_[p] = evaluatePatch(static_cast<int>(p), slots_); });
     for (int p = 0; p < n_; ++p)
       if (in.patches[p].family == Family::U) refreshLocks(p);
     meets_.resize(in.hinges.size());
@@ -88,11 +97,13 @@ class Search {
     Realization r;
     r.params = params_;
     r.slots = slots_;
-    r.cuts = cuts_;
-    r.slotted = slotted_;
+    for (const auto& st : state_) {
+      r.cuts.push_back(st->cuts);
+      r.slotted.push_back(st->slotted);
+    }
     const Score s = score();
     r.interlocks = {found_, std::max(0, found_ - s.interlocks), s.interlocks, s.cutThroughs};
-    for (int p = 0; p < n_; ++p) r.splitPatches += pieces_[p] > 1 ? 1 : 0;
+    for (int p = 0; p < n_; ++p) r.splitPatches += state_[p]->pieces > 1 ? 1 : 0;
     r.meets.assign(meets_.begin(), meets_.end());
     r.lostPins = static_cast<int>(lostPins().size());
     measure(r);
@@ -103,11 +114,58 @@ class Search {
  private:
   int lockAt(int a, int b) const { return locks_[static_cast<size_t>(a) * n_ + b]; }
 
-  void evaluatePatch(int p) {
+  // Patch p slotted as `slots` says. A pure function of p and p's own slots (patchKey), so
+  // it may run on any thread and its result may be reused.
+  std::shared_ptr<const PatchState> evaluatePatch(int p, const std::vector<SlotPair>& slots) const {
     const PatchShape& ps = in_.patches[p];
-    cuts_[p] = planSlots(ps.shape, patchHinges(in_, slots_, p), params_);
-    slotted_[p] = cutters_[p].cut(slotRegion(cuts_[p], params_), &pieces_[p]);
-    holes_[p] = holeLoops(slotted_[p], ps.position);
+    auto st = std::make_shared<PatchState>();
+    st->cuts = planSlots(ps.shape, patchHinges(in_, slots, p), params_);
+    st->slotted = cutters_[p].cut(slotRegion(st->cuts, params_), &st->pieces);
+    st->holes = holeLoops(st->slotted, ps.position);
+    return st;
+  }
+
+  // What patch p's state depends on: the slot p gets at each of its hinges.
+  using PatchKey = std::pair<int, std::vector<Slot>>;
+  PatchKey patchKey(int p, const std::vector<SlotPair>& slots) const {
+    PatchKey key{p, {}};
+    const bool isU = in_.patches[p].family == Family::U;
+    for (const int h : hingesOf_[p]) key.second.push_back(isU ? uSlot(slots[h]) : vSlot(slots[h]));
+    return key;
+  }
+
+  // Evaluates, both cores at once, every patch state the moves need that is not cached yet.
+  // Which states are computed does not depend on timing, and each is a pure function, so the
+  // search stays deterministic.
+  void prepare(const std::vector<Move>& moves) {
+    std::vector<PatchKey> keys;
+    std::vector<std::vector<SlotPair>> slotsOf;
+    std::set<PatchKey> queued;
+    std::vector<SlotPair> slots = slots_;
+    for (const Move& m : moves) {
+      for (const auto& [h, pair] : m) slots[h] = pair;
+      for (const auto& [h, pair] : m)
+        for (const int p : {in_.hinges[h].u, in_.hinges[h].v}) {
+          PatchKey key = patchKey(p, slots);
+          if (cache_.count(key) || !queued.insert(key).second) continue;
+          keys.push_back(std::move(key));
+          slotsOf.push_back(slots);
+        }
+      for (const auto& [h, pair] : m) slots[h] = slots_[h];
+    }
+    std::vector<std::shared_ptr<const PatchState>> states(keys.size());
+    parallelFor(keys.size(), [&](size_t i) { states[i] = evaluatePatch(keys[i].first, slotsOf[i]); });
+    for (size_t i = 0; i < keys.size(); ++i) cache_.emplace(std::move(keys[i]), std::move(states[i]));
+  }
+
+  // The state of patch p for the current slots, computed when no move asked for it yet.
+  std::shared_ptr<const PatchState> stateOf(int p) {
+    PatchKey key = patchKey(p, slots_);
+    const auto it = cache_.find(key);
+    if (it != cache_.end()) return it->second;
+    auto st = evaluatePatch(p, slots_);
+    cache_.emplace(std::move(key), st);
+    return st;
   }
 
   void refreshLocks(int p) {
@@ -115,7 +173,8 @@ class Search {
     for (int q = 0; q < n_; ++q) {
       if (in_.patches[q].family == in_.patches[p].family) continue;
       const int a = isU ? p : q, b = isU ? q : p;
-      locks_[static_cast<size_t>(a) * n_ + b] = interlockCount(holes_[a], in_.uFrame, holes_[b], in_.vFrame);
+      locks_[static_cast<size_t>(a) * n_ + b] =
+          interlockCount(state_[a]->holes, in_.uFrame, state_[b]->holes, in_.vFrame);
     }
   }
 
@@ -130,7 +189,8 @@ class Search {
       const bool isU = in_.patches[p].family == Family::U;
       const double x =
           lineX(isU ? in_.uFrame : in_.vFrame, isU ? in_.vFrame : in_.uFrame, in_.patches[other].position);
-      for (const Interval& i : intersectIntervals(slotted_[p].intervalsOnLine({x, 0}, {0, 1}), {hinge.w}))
+      for (const Interval& i :
+           intersectIntervals(state_[p]->slotted.intervalsOnLine({x, 0}, {0, 1}), {hinge.w}))
         covered += i.hi - i.lo;
     }
     return covered >= 0.9 * (hinge.w.hi - hinge.w.lo);
@@ -153,7 +213,7 @@ class Search {
 
   Score score() const {
     Score s;
-    for (int p = 0; p < n_; ++p) s.broken += pieces_[p] > 1 ? 1 : 0;
+    for (int p = 0; p < n_; ++p) s.broken += state_[p]->pieces > 1 ? 1 : 0;
     s.broken += static_cast<int>(lostPins().size());
     for (const int l : locks_) s.interlocks += l;
     for (const SlotPair x : slots_) s.cutThroughs += isUpDown(x) ? 0 : 1;
@@ -163,7 +223,7 @@ class Search {
   // A split patch (p, -1), or an interlocked pair (U-patch, V-patch); (-1, -1) when none.
   std::pair<int, int> nextViolation(const std::set<std::pair<int, int>>& given) const {
     for (int p = 0; p < n_; ++p)
-      if (pieces_[p] > 1 && !given.count({p, -1})) return {p, -1};
+      if (state_[p]->pieces > 1 && !given.count({p, -1})) return {p, -1};
     for (const auto& pair : lostPins())
       if (!given.count(pair)) return pair;
     for (int a = 0; a < n_; ++a)
@@ -186,8 +246,8 @@ class Search {
     }
     savedPatches_.clear();
     for (const int p : touched) {
-      savedPatches_.push_back({p, cuts_[p], slotted_[p], pieces_[p], holes_[p]});
-      evaluatePatch(p);
+      savedPatches_.push_back({p, state_[p]});
+      state_[p] = stateOf(p);
     }
     for (const int p : touched) {
       refreshLocks(p);
@@ -198,12 +258,7 @@ class Search {
 
   void undo() {
     for (const auto& [h, pair] : saved_) slots_[h] = pair;
-    for (auto& s : savedPatches_) {
-      cuts_[s.patch] = std::move(s.cuts);
-      slotted_[s.patch] = std::move(s.slotted);
-      pieces_[s.patch] = s.pieces;
-      holes_[s.patch] = std::move(s.holes);
-    }
+    for (auto& s : savedPatches_) state_[s.patch] = std::move(s.state);
     locks_ = savedLocks_;
     meets_ = savedMeets_;
   }
@@ -260,7 +315,10 @@ class Search {
 
   bool improve(std::pair<int, int> v) {
     const Score now = score();
+    // States from earlier steps are seldom asked for again; keeping them would only grow.
+    cache_.clear();
     for (const std::vector<Move>& tier : tiers(v)) {
+      prepare(tier);
       const Move* best = nullptr;
       Score bestScore = now;
       for (const Move& m : tier) {
@@ -333,10 +391,7 @@ class Search {
 
   struct SavedPatch {
     int patch;
-    std::vector<SlotCut> cuts;
-    Region2d slotted;
-    int pieces;
-    HoleLoops holes;
+    std::shared_ptr<const PatchState> state;
   };
 
   const RealizationInput& in_;
@@ -344,11 +399,9 @@ class Search {
   int n_;
   std::vector<std::vector<int>> hingesOf_;
   std::vector<SlotPair> slots_;
-  std::vector<SlotCutter> cutters_;  // per patch
-  std::vector<std::vector<SlotCut>> cuts_;
-  std::vector<Region2d> slotted_;
-  std::vector<int> pieces_;
-  std::vector<HoleLoops> holes_;
+  std::vector<SlotCutter> cutters_;                              // per patch
+  std::vector<std::shared_ptr<const PatchState>> state_;         // per patch, for slots_
+  std::map<PatchKey, std::shared_ptr<const PatchState>> cache_;  // states the current step computed
   std::vector<int> locks_;  // interlocked hole pairs, [U-patch * n + V-patch]
   int found_ = 0;
   std::vector<std::pair<int, SlotPair>> saved_;
