@@ -71,7 +71,10 @@ class Search {
       hingesOf_[in.hinges[h].v].push_back(h);
     }
     slots_.assign(in.hinges.size(), params.uUp ? SlotPair::UpDown : SlotPair::DownUp);
-    for (const PatchShape& p : in.patches) cutters_.emplace_back(p.shape, params, in.tolerance);
+    for (int p = 0; p < n_; ++p) {
+      cutters_.emplace_back(in.patches[p].shape, params, in.tolerance);
+      lines_.emplace_back(in.patches[p].shape, VerticalLines::slotLines(patchHinges(in_, slots_, p), params));
+    }
     locks_.assign(static_cast<size_t>(n_) * n_, 0);
     state_.resize(n_);
     parallelFor(static_cast<size_t>(n_),
@@ -119,7 +122,7 @@ class Search {
   std::shared_ptr<const PatchState> evaluatePatch(int p, const std::vector<SlotPair>& slots) const {
     const PatchShape& ps = in_.patches[p];
     auto st = std::make_shared<PatchState>();
-    st->cuts = planSlots(ps.shape, patchHinges(in_, slots, p), params_);
+    st->cuts = planSlots(lines_[p], patchHinges(in_, slots, p), params_);
     st->slotted = cutters_[p].cut(slotRegion(st->cuts, params_), &st->pieces);
     st->holes = holeLoops(st->slotted, ps.position);
     return st;
@@ -399,6 +402,7 @@ class Search {
   int n_;
   std::vector<std::vector<int>> hingesOf_;
   std::vector<SlotPair> slots_;
+  std::vector<VerticalLines> lines_;                             // per patch: its shape on its hinge lines
   std::vector<SlotCutter> cutters_;                              // per patch
   std::vector<std::shared_ptr<const PatchState>> state_;         // per patch, for slots_
   std::map<PatchKey, std::shared_ptr<const PatchState>> cache_;  // states the current step computed

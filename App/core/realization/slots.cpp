@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
 
 #include "support/error.hpp"
 
@@ -28,11 +29,11 @@ Interval containing(const std::vector<Interval>& intervals, double y) {
 // How far an open end at `end` (going in direction dir = +1 up, -1 down) must run so that the
 // whole strip leaves the paper: the strip's side lines may meet paper that reaches further
 // than the centre line does (a slot at the bottom of a valley). Never into paper beyond a gap.
-double openEnd(const Region2d& shape, double x, double halfWidth, double end, int dir) {
+double openEnd(const VerticalLines& shape, double x, double halfWidth, double end, int dir) {
   double reach = end, wall = std::numeric_limits<double>::infinity();
   for (const double xs : {x - halfWidth, x, x + halfWidth}) {
     const double inside = end - dir * 1e-3;
-    for (const Interval& i : shape.intervalsOnLine({xs, 0}, {0, 1})) {
+    for (const Interval& i : shape.at(xs)) {
       if (inside >= i.lo && inside <= i.hi) reach = dir > 0 ? std::max(reach, i.hi) : std::min(reach, i.lo);
       const double start = dir > 0 ? i.lo : -i.hi;  // paper met going outwards
       if (start > dir * end + 1e-9) wall = std::min(wall, start - dir * end);
@@ -170,13 +171,36 @@ Slot vSlot(SlotPair pair) {
   return Slot::None;
 }
 
+VerticalLines::VerticalLines(const Region2d& shape, const std::vector<double>& xs) : shape_(&shape) {
+  for (const double x : xs)
+    if (!lines_.count(x)) lines_.emplace(x, shape.intervalsOnLine({x, 0}, {0, 1}));
+}
+
+std::vector<Interval> VerticalLines::at(double x) const {
+  const auto it = lines_.find(x);
+  return it != lines_.end() ? it->second : shape_->intervalsOnLine({x, 0}, {0, 1});
+}
+
+std::vector<double> VerticalLines::slotLines(const std::vector<PatchHinge>& hinges,
+                                             const SlotParams& params) {
+  std::vector<double> xs;
+  const double halfWidth = params.width() / 2;
+  for (const PatchHinge& h : hinges) xs.insert(xs.end(), {h.x - halfWidth, h.x, h.x + halfWidth});
+  return xs;
+}
+
 std::vector<SlotCut> planSlots(const Region2d& shape, const std::vector<PatchHinge>& hinges,
+                               const SlotParams& params) {
+  return planSlots(VerticalLines(shape, {}), hinges, params);
+}
+
+std::vector<SlotCut> planSlots(const VerticalLines& shape, const std::vector<PatchHinge>& hinges,
                                const SlotParams& params) {
   std::vector<SlotCut> cuts;
   const double halfWidth = params.width() / 2;
   for (const PatchHinge& h : hinges) {
     if (h.slot == Slot::None) continue;
-    const Interval paper = containing(shape.intervalsOnLine({h.x, 0}, {0, 1}), (h.w.lo + h.w.hi) / 2);
+    const Interval paper = containing(shape.at(h.x), (h.w.lo + h.w.hi) / 2);
     // Neighbours on the same line and the same stretch of paper bound the cut.
     double above = paper.hi, below = paper.lo;  // for through: segment ends of neighbours
     double rootAbove = paper.hi, rootBelow = paper.lo;

@@ -10,6 +10,7 @@
 // Coordinates are the patch's frame: x across the hinge lines, y along W.
 #pragma once
 
+#include <map>
 #include <vector>
 
 #include "geometry/region2d.hpp"
@@ -57,8 +58,26 @@ struct SlotCut {
   bool openLo = false, openHi = false;
 };
 
+// Where a shape lies on vertical lines x = c (Region2d::intervalsOnLine along +y), kept for
+// the lines given up front: planning a patch's slots asks for the same few lines, those of
+// its hinges and both walls of their slots, for every slot choice the search tries. Other
+// lines are computed when asked. Keeps a pointer to `shape`, which must outlive it.
+class VerticalLines {
+ public:
+  VerticalLines(const Region2d& shape, const std::vector<double>& xs);
+  std::vector<Interval> at(double x) const;
+  // The lines planSlots asks for, given the hinges (whatever their slots).
+  static std::vector<double> slotLines(const std::vector<PatchHinge>& hinges, const SlotParams& params);
+
+ private:
+  const Region2d* shape_;
+  std::map<double, std::vector<Interval>> lines_;
+};
+
 // The strips to cut for the hinges of one patch (one per hinge that is not `none`).
 std::vector<SlotCut> planSlots(const Region2d& shape, const std::vector<PatchHinge>& hinges,
+                               const SlotParams& params);
+std::vector<SlotCut> planSlots(const VerticalLines& shape, const std::vector<PatchHinge>& hinges,
                                const SlotParams& params);
 
 // The strips as plain shapes (rectangles, and discs for round closed ends), for the
