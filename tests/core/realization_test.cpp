@@ -57,6 +57,33 @@ RealizationInput handMade(const std::vector<PatchShape>& patches) {
   return in;
 }
 
+// SlotCutter erodes the shape once and takes the grown slots from it, instead of eroding
+// each slotted shape: its piece count must be the one eroding the slotted shape gives, also
+// for bridges of paper around the neck width, under a slot and between a slot and a hole.
+TEST(Slots, CutterCountsPiecesAsErodingTheSlottedShape) {
+  SlotParams params;  // neck 0.15 mm with no tolerance: bridges under 0.3 mm are cut
+  const double neck = 0.15, crumb = 0.5;
+  const Region2d plain = rect(0, 0, 20, 10);
+  const Region2d holed = plain.subtract(Region2d::fromLoops({circle(10, 3, 2)}));
+  for (const SlotEnd end : {SlotEnd::Square, SlotEnd::Round})
+    for (const Region2d* shape : {&plain, &holed})
+      for (int k = 0; k <= 20; ++k) {
+        const double bridge = 0.2 + 0.01 * k;  // paper left under the slot
+        const double root = (shape == &plain ? 0 : 5) + bridge;
+        params.end = end;
+        const std::vector<SlotCut> cuts = {{10, {root, 11}, false, true}, {4, {-1, 6}, true, false}};
+        const SlotCutter cutter(*shape, params, 0);
+        int pieces = 0;
+        const Region2d out = cutter.cut(slotRegion(cuts, params), &pieces);
+        const int expected =
+            std::max(static_cast<int>(out.components().size()),
+                     openedPieceCountFull(out, neck, crumb) - openedPieceCountFull(*shape, neck, crumb) + 1);
+        EXPECT_EQ(pieces, expected) << "bridge " << bridge << (shape == &plain ? "" : " over a hole");
+        if (shape == &plain && end == SlotEnd::Square && std::fabs(bridge - 2 * neck) > 0.005)
+          EXPECT_EQ(pieces, bridge < 2 * neck ? 2 : 1) << "bridge " << bridge;
+      }
+}
+
 // The search keeps patch states computed for earlier moves and computes them on both
 // cores; the ones it ends with must be exactly what the final slots give afresh.
 void expectStatesMatchSlots(const RealizationInput& in, const Realization& r) {

@@ -114,7 +114,8 @@ class SlotCutter {
  private:
   Region2d shape_;
   double crumb_, neck_;
-  int shapePieces_;  // of the opened shape, before any slot
+  Region2d erodedShape_;  // shape_ eroded by neck_
+  int shapePieces_;       // of the opened shape, before any slot
 };
 
 }  // namespace sliceform
