@@ -142,6 +142,38 @@ TEST(ExactPatches, OnlySectionsThatAddToTheUnionAreFused) {
   EXPECT_EQ(sectionsAddingToUnion(sections, 0).size(), 2u);
 }
 
+// A mesh patch's outline loses the points that add nothing within the tolerance: a circle of
+// 2000 points (as a fine scan gives) with a slot and a hole keeps its slot corners, its hole
+// and its area, with far fewer points.
+TEST(ExactPatches, MeshOutlinesAreSimplifiedWithinTheTolerance) {
+  Region2d::Loop outer;
+  for (int k = 0; k < 2000; ++k) {
+    const double t = 2 * M_PI * k / 2000;
+    outer.push_back({30 * std::cos(t), 30 * std::sin(t)});
+  }
+  const Region2d disc = Region2d::fromLoops({outer});
+  const Region2d slot = Region2d::fromLoops({{{-0.2, 10}, {0.2, 10}, {0.2, 40}, {-0.2, 40}}});
+  const Region2d hole = Region2d::fromLoops({{{-10, -10}, {-5, -10}, {-5, -5}, {-10, -5}}});
+  const Region2d patch = disc.subtract(slot).subtract(hole);
+  const Region2d simpler = simplifiedOutline(patch, 0.01);
+  size_t before = 0, after = 0;
+  for (const auto& l : patch.loops()) before += l.size();
+  for (const auto& l : simpler.loops()) after += l.size();
+  EXPECT_LT(after, before / 4);
+  EXPECT_EQ(simpler.holeCount(), 1);
+  // Nowhere farther than the tolerance: the two differ by less than a 0.01 mm band.
+  const double perimeter = 2 * M_PI * 30 + 60 + 20;
+  EXPECT_LT(simpler.subtract(patch).area() + patch.subtract(simpler).area(), 0.01 * perimeter);
+  EXPECT_TRUE(simpler.subtract(patch.offset(0.011)).empty());
+  EXPECT_TRUE(patch.subtract(simpler.offset(0.011)).empty());
+  // The slot is still 0.4 mm wide: its corners are kept.
+  int slotCorners = 0;
+  for (const auto& l : simpler.loops())
+    for (const Vec2& p : l)
+      slotCorners += std::fabs(std::fabs(p.x) - 0.2) < 1e-6 && std::fabs(p.y - 10) < 1e-6;
+  EXPECT_EQ(slotCorners, 2);
+}
+
 TEST(ExactPatches, KerfMovesCutPathsAwayFromThePaper) {
   const Region2d square =
       Region2d::fromLoops({{{0, 0}, {40, 0}, {40, 40}, {0, 40}}, {{10, 10}, {10, 30}, {30, 30}, {30, 10}}});
