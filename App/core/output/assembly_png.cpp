@@ -210,19 +210,14 @@ void drawEdges(Raster& r, const Placement& pl, const Panel3& panel, int thicknes
     }
 }
 
-using Surface = std::unique_ptr<cairo_surface_t, decltype(&cairo_surface_destroy)>;
-
 // Averages each kSupersample x kSupersample block into one opaque pixel.
-Surface downsample(const Raster& r) {
-  const int w = r.width / kSupersample, h = r.height / kSupersample;
-  Surface surface(cairo_image_surface_create(CAIRO_FORMAT_RGB24, w, h), cairo_surface_destroy);
-  if (cairo_surface_status(surface.get()) != CAIRO_STATUS_SUCCESS)
-    throw Error(ErrorKind::Io, "cannot make a " + std::to_string(w) + " x " + std::to_string(h) + " picture");
-  cairo_surface_flush(surface.get());
-  unsigned char* data = cairo_image_surface_get_data(surface.get());
-  const int stride = cairo_image_surface_get_stride(surface.get());
-  for (int y = 0; y < h; ++y)
-    for (int x = 0; x < w; ++x) {
+Picture downsample(const Raster& r) {
+  Picture out;
+  out.width = r.width / kSupersample;
+  out.height = r.height / kSupersample;
+  out.pixels.resize(size_t(out.width) * out.height);
+  for (int y = 0; y < out.height; ++y)
+    for (int x = 0; x < out.width; ++x) {
       Rgb sum{0, 0, 0};
       for (int dy = 0; dy < kSupersample; ++dy)
         for (int dx = 0; dx < kSupersample; ++dx)
@@ -233,10 +228,9 @@ Surface downsample(const Raster& r) {
         const float v = std::clamp(sum[k] / (kSupersample * kSupersample), 0.0f, 1.0f);
         pixel = pixel << 8 | static_cast<uint32_t>(std::lround(v * 255));
       }
-      reinterpret_cast<uint32_t*>(data + size_t(y) * stride)[x] = pixel;  // RGB24: 0x00RRGGBB
+      out.pixels[size_t(y) * out.width + x] = pixel;
     }
-  cairo_surface_mark_dirty(surface.get());
-  return surface;
+  return out;
 }
 
 }  // namespace
@@ -271,7 +265,7 @@ std::vector<Panel3> assemblyPanels(const Arrangement& a, const std::vector<Patch
   return panels;
 }
 
-void writeAssemblyPng(const std::vector<Panel3>& panels, const std::string& path, int widthPixels) {
+Picture drawAssembly(const std::vector<Panel3>& panels, int widthPixels) {
   if (widthPixels < 16 || widthPixels > 16384)
     throw Error(ErrorKind::BadParameter, "the assembly picture must be 16 to 16384 pixels wide");
   const Placement pl = place(panels, widthPixels);
@@ -281,11 +275,31 @@ void writeAssemblyPng(const std::vector<Panel3>& panels, const std::string& path
   const int thickness = kSupersample * std::max(1, static_cast<int>(std::lround(widthPixels / 1000.0)));
   const double bias = 2e-3 * std::max(pl.nearest - pl.farthest, 1e-9) + thickness / pl.scale;
   for (const Panel3& panel : panels) drawEdges(raster, pl, panel, thickness, bias);
-  const Surface surface = downsample(raster);
+  return downsample(raster);
+}
+
+void writePicturePng(const Picture& picture, const std::string& path) {
+  using Surface = std::unique_ptr<cairo_surface_t, decltype(&cairo_surface_destroy)>;
+  const Surface surface(cairo_image_surface_create(CAIRO_FORMAT_RGB24, picture.width, picture.height),
+                        cairo_surface_destroy);
+  if (cairo_surface_status(surface.get()) != CAIRO_STATUS_SUCCESS)
+    throw Error(ErrorKind::Io, "cannot make a " + std::to_string(picture.width) + " x " +
+                                   std::to_string(picture.height) + " picture");
+  cairo_surface_flush(surface.get());
+  unsigned char* data = cairo_image_surface_get_data(surface.get());
+  const int stride = cairo_image_surface_get_stride(surface.get());
+  for (int y = 0; y < picture.height; ++y)
+    std::copy_n(picture.pixels.begin() + size_t(y) * picture.width, picture.width,
+                reinterpret_cast<uint32_t*>(data + size_t(y) * stride));  // RGB24: 0x00RRGGBB
+  cairo_surface_mark_dirty(surface.get());
   writeAtomically(path, [&](const std::string& temporary) {
     if (cairo_surface_write_to_png(surface.get(), temporary.c_str()) != CAIRO_STATUS_SUCCESS)
       throw Error(ErrorKind::Io, "cannot write " + path);
   });
+}
+
+void writeAssemblyPng(const std::vector<Panel3>& panels, const std::string& path, int widthPixels) {
+  writePicturePng(drawAssembly(panels, widthPixels), path);
 }
 
 }  // namespace sliceform

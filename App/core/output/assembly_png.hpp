@@ -5,6 +5,7 @@
 // so the slotted lattice reads clearly. Written as PNG with cairo.
 #pragma once
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -26,9 +27,22 @@ struct Panel3 {
 std::vector<Panel3> assemblyPanels(const Arrangement& a, const std::vector<PatchFace>& patches,
                                    double thetaDegrees);
 
-// Written atomically. The view's up is W, found as (U normal) x (V normal) from the panels
-// (+z if the panels are all of one family); the picture is widthPixels wide and as high as
-// the model needs (at most 1.5 times the width). Throws Io or BadParameter.
+// The drawn picture, before it is a PNG: 0x00RRGGBB per pixel, row by row.
+struct Picture {
+  int width = 0, height = 0;
+  std::vector<uint32_t> pixels;
+};
+
+// The view's up is W, found as (U normal) x (V normal) from the panels (+z if the panels
+// are all of one family); the picture is widthPixels wide and as high as the model needs
+// (at most 1.5 times the width). Throws BadParameter. Uses no cairo: it may run beside
+// the sheets' cairo surfaces without changing their ids (see design_files.cpp).
+Picture drawAssembly(const std::vector<Panel3>& panels, int widthPixels = 1200);
+
+// Written atomically with cairo. Throws Io.
+void writePicturePng(const Picture& picture, const std::string& path);
+
+// drawAssembly, then writePicturePng.
 void writeAssemblyPng(const std::vector<Panel3>& panels, const std::string& path, int widthPixels = 1200);
 
 // The paper colour of a family (0 = U, 1 = V), RGB in [0, 1]; the glTF uses the same two.

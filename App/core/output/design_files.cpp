@@ -82,29 +82,36 @@ DesignFiles DesignFilesWriter::finish(const Model& model, const DesignParams& pa
   const std::vector<Panel3> panels = assemblyPanels(d.arrangement, d.patches, foldAngle_);
   clock.lap("export drawings");
   // The files are independent of each other: written on all cores, the longest first.
+  // cairo numbers every surface it makes from one counter for the whole process, and the
+  // SVG files carry that number; so everything drawn with cairo is one task, in a fixed
+  // order, and the assembly picture is drawn without cairo and written after it.
   struct File {
     const char* stage;
     std::function<void()> write;
   };
+  Picture picture;
   std::vector<File> work{
-      {"export assembly PNG, in parallel", [&, to = path("assembly.png")] { writeAssemblyPng(panels, to); }},
+      {"export assembly PNG, in parallel", [&] { picture = drawAssembly(panels); }},
+      {"export sheets PDF PNG SVG, in parallel",
+       [&, pdf = path("sheets.pdf"), png = path("sheets.png")] {
+         writeSheetsPdf(sheets, d.layout.sheet, pdf);
+         writeSheetsPng(sheets, d.layout.sheet, png);
+         for (size_t k = 0; k < sheets.size(); ++k)
+           writeSheetSvg(sheets[k], d.layout.sheet,
+                         (dir / sheetFileName(static_cast<int>(k), ".svg")).string());
+       }},
       {"export glTF, in parallel", [&, to = path("assembly.glb")] { writeGltf(panels, to); }},
       {"export BREP, in parallel",
        [&, to = path("assembly.brep")] { writeShape(assemble(d.arrangement, d.patches, foldAngle_), to); }},
-      {"export PDF, in parallel",
-       [&, to = path("sheets.pdf")] { writeSheetsPdf(sheets, d.layout.sheet, to); }},
-      {"export sheets PNG, in parallel",
-       [&, to = path("sheets.png")] { writeSheetsPng(sheets, d.layout.sheet, to); }},
       {"export report, in parallel",
        [&, to = path("report.json")] { writeJson(reportJson(model, params, d), to); }},
   };
-  for (size_t k = 0; k < sheets.size(); ++k)
-    work.push_back(
-        {"export SVG + DXF, in parallel", [&, k, svg = path(sheetFileName(static_cast<int>(k), ".svg")),
-                                           dxf = path(sheetFileName(static_cast<int>(k), ".dxf"))] {
-           writeSheetSvg(sheets[k], d.layout.sheet, svg);
-           writeSheetDxf(sheets[k], d.layout.sheet, dxf);
-         }});
+  for (size_t k = 0; k < sheets.size(); ++k) {
+    path(sheetFileName(static_cast<int>(k), ".svg"));
+    work.push_back({"export DXF, in parallel", [&, k, to = path(sheetFileName(static_cast<int>(k), ".dxf"))] {
+                      writeSheetDxf(sheets[k], d.layout.sheet, to);
+                    }});
+  }
   std::vector<double> ms(work.size());
   parallelFor(work.size(), [&](size_t k) {
     const auto begin = std::chrono::steady_clock::now();
@@ -121,6 +128,7 @@ DesignFiles DesignFilesWriter::finish(const Model& model, const DesignParams& pa
         throw Error(ErrorKind::Io, "cannot remove the stale " + stale.string() + ": " + failed.message());
       files.removed.push_back(stale.filename().string());
     }
+  writePicturePng(picture, path("assembly.png"));
   clock.lap("export files");
   // Each file's own time, summed per kind (the sheets' SVG and DXF together).
   std::vector<StageTime> own;
