@@ -93,6 +93,30 @@ TEST(Region2d, ComponentsOfSquareWithHoleAndIsland) {
   EXPECT_EQ(island.components().size(), 1u);
 }
 
+// subtractComponents reads the pieces off the difference's own tree; they must be the
+// pieces (same paths) that subtract(...).components() gives, also where pieces touch at a
+// corner, islands sit in holes, and a cut leaves a piece inside another's hole.
+TEST(Region2d, SubtractComponentsMatchesSubtractThenComponents) {
+  const Region2d frame = Region2d::fromLoops({rect(0, 0, 30, 30), rect(5, 5, 25, 25, true)});
+  const Region2d island = Region2d::fromLoops({rect(10, 10, 20, 20)});
+  const std::vector<std::pair<Region2d, Region2d>> cases = {
+      {Region2d::fromLoops({rect(0, 0, 10, 10)}), Region2d::fromLoops({rect(4, -1, 6, 11)})},
+      {frame.unite(island), Region2d::fromLoops({rect(14, -1, 16, 12)})},
+      {frame.unite(island), Region2d::fromLoops({rect(14, 12, 16, 31)})},
+      // The cut leaves two squares touching at one corner.
+      {Region2d::fromLoops({rect(0, 0, 10, 10)}),
+       Region2d::fromLoops({rect(5, 0, 10, 5), rect(0, 5, 5, 10)})},
+      {Region2d::fromLoops({rect(0, 0, 10, 10)}), Region2d()},
+      {Region2d(), Region2d::fromLoops({rect(0, 0, 10, 10)})},
+  };
+  for (size_t k = 0; k < cases.size(); ++k) {
+    const std::vector<Region2d> fast = cases[k].first.subtractComponents(cases[k].second);
+    const std::vector<Region2d> slow = cases[k].first.subtract(cases[k].second).components();
+    ASSERT_EQ(fast.size(), slow.size()) << "case " << k;
+    for (size_t i = 0; i < fast.size(); ++i) EXPECT_EQ(fast[i].paths(), slow[i].paths()) << "case " << k;
+  }
+}
+
 TEST(Region2d, BooleanAreas) {
   const Region2d a = Region2d::fromLoops({rect(0, 0, 10, 10)});
   const Region2d b = Region2d::fromLoops({rect(5, 5, 15, 15)});

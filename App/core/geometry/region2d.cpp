@@ -145,6 +145,17 @@ std::vector<Region2d> Region2d::components() const {
   return out;
 }
 
+std::vector<Region2d> Region2d::subtractComponents(const Region2d& other) const {
+  Clipper clipper;
+  clipper.AddPaths(paths_, ClipperLib::ptSubject, true);
+  clipper.AddPaths(other.paths_, ClipperLib::ptClip, true);
+  ClipperLib::PolyTree tree;
+  clipper.Execute(ClipperLib::ctDifference, tree, ClipperLib::pftNonZero, ClipperLib::pftNonZero);
+  std::vector<Region2d> out;
+  collectComponents(tree, out);
+  return out;
+}
+
 Region2d Region2d::unite(const Region2d& other) const {
   Region2d r;
   r.paths_ = boolean(paths_, other.paths_, ClipperLib::ctUnion);

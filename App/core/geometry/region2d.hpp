@@ -46,6 +46,9 @@ class Region2d {
 
   // Connected pieces, each one outer loop with its holes.
   std::vector<Region2d> components() const;
+  // subtract(other).components() in one sweep: the pieces come straight from the
+  // difference's tree instead of a second union over its result.
+  std::vector<Region2d> subtractComponents(const Region2d& other) const;
 
   Region2d unite(const Region2d& other) const;
   Region2d intersect(const Region2d& other) const;

@@ -357,9 +357,8 @@ SlotCutter::SlotCutter(const Region2d& shape, const SlotParams& params, double t
       shapePieces_(openedPieceCount(shape, neck_, crumb_)) {}
 
 Region2d SlotCutter::cut(const Region2d& slots, int* pieces) const {
-  const Region2d cut = shape_.subtract(slots);
   std::vector<Region2d> kept;
-  for (Region2d& piece : cut.components())
+  for (Region2d& piece : shape_.subtractComponents(slots))
     if (piece.area() >= crumb_) kept.push_back(std::move(piece));
   const Region2d out = kept.size() == 1 ? kept.front() : Region2d::uniteAll(kept);
   if (!pieces) return out;
