@@ -98,6 +98,19 @@ void expectStatesMatchSlots(const RealizationInput& in, const Realization& r) {
     const SlotCutter cutter(in.patches[p].shape, r.params, in.tolerance);
     EXPECT_EQ(cutter.cut(slotRegion(cuts, r.params), nullptr).paths(), r.slotted[p].paths()) << "patch " << p;
   }
+  // Whether the slotted patches still meet along each hinge, as docs/decisions.md defines it.
+  for (size_t h = 0; h < in.hinges.size(); ++h) {
+    const ScaffoldHinge& hinge = in.hinges[h];
+    double covered = 0;
+    for (const int p : {hinge.u, hinge.v}) {
+      const bool isU = p == hinge.u;
+      const double x = lineX(isU ? in.uFrame : in.vFrame, isU ? in.vFrame : in.uFrame,
+                             in.patches[isU ? hinge.v : hinge.u].position);
+      for (const Interval& i : intersectIntervals(r.slotted[p].intervalsOnLine({x, 0}, {0, 1}), {hinge.w}))
+        covered += i.hi - i.lo;
+    }
+    EXPECT_EQ(r.meets[h], covered >= 0.9 * (hinge.w.hi - hinge.w.lo)) << "hinge " << h;
+  }
 }
 
 // Paper Fig. 3: two rings at right angles through each other, joined where they cross.

@@ -59,6 +59,9 @@ struct PatchState {
   Region2d slotted;
   int pieces = 1;
   HoleLoops holes;
+  // Per hinge of the patch (in hingesOf_ order): the lengths of the hinge segment the
+  // slotted patch still covers, for meets(); read off once here, not at every move.
+  std::vector<std::vector<double>> onHinge;
 };
 
 class Search {
@@ -66,7 +69,9 @@ class Search {
   Search(const RealizationInput& in, const SlotParams& params)
       : in_(in), params_(params), n_(static_cast<int>(in.patches.size())) {
     hingesOf_.resize(n_);
+    hingeIndex_.resize(in.hinges.size());
     for (int h = 0; h < static_cast<int>(in.hinges.size()); ++h) {
+      hingeIndex_[h] = {hingesOf_[in.hinges[h].u].size(), hingesOf_[in.hinges[h].v].size()};
       hingesOf_[in.hinges[h].u].push_back(h);
       hingesOf_[in.hinges[h].v].push_back(h);
     }
@@ -125,6 +130,16 @@ class Search {
     st->cuts = planSlots(lines_[p], patchHinges(in_, slots, p), params_);
     st->slotted = cutters_[p].cut(slotRegion(st->cuts, params_), &st->pieces);
     st->holes = holeLoops(st->slotted, ps.position);
+    const bool isU = ps.family == Family::U;
+    for (const int h : hingesOf_[p]) {
+      const ScaffoldHinge& hinge = in_.hinges[h];
+      const double x = lineX(isU ? in_.uFrame : in_.vFrame, isU ? in_.vFrame : in_.uFrame,
+                             in_.patches[isU ? hinge.v : hinge.u].position);
+      std::vector<double> lengths;
+      for (const Interval& i : intersectIntervals(st->slotted.intervalsOnLine({x, 0}, {0, 1}), {hinge.w}))
+        lengths.push_back(i.hi - i.lo);
+      st->onHinge.push_back(std::move(lengths));
+    }
     return st;
   }
 
@@ -187,15 +202,8 @@ class Search {
   bool meets(int h) const {
     const ScaffoldHinge& hinge = in_.hinges[h];
     double covered = 0;
-    for (const int p : {hinge.u, hinge.v}) {
-      const int other = p == hinge.u ? hinge.v : hinge.u;
-      const bool isU = in_.patches[p].family == Family::U;
-      const double x =
-          lineX(isU ? in_.uFrame : in_.vFrame, isU ? in_.vFrame : in_.uFrame, in_.patches[other].position);
-      for (const Interval& i :
-           intersectIntervals(state_[p]->slotted.intervalsOnLine({x, 0}, {0, 1}), {hinge.w}))
-        covered += i.hi - i.lo;
-    }
+    for (const double length : state_[hinge.u]->onHinge[hingeIndex_[h].first]) covered += length;
+    for (const double length : state_[hinge.v]->onHinge[hingeIndex_[h].second]) covered += length;
     return covered >= 0.9 * (hinge.w.hi - hinge.w.lo);
   }
 
@@ -401,6 +409,7 @@ class Search {
   SlotParams params_;
   int n_;
   std::vector<std::vector<int>> hingesOf_;
+  std::vector<std::pair<size_t, size_t>> hingeIndex_;  // per hinge: its index in hingesOf_ of u, of v
   std::vector<SlotPair> slots_;
   std::vector<VerticalLines> lines_;                             // per patch: its shape on its hinge lines
   std::vector<SlotCutter> cutters_;                              // per patch
