@@ -76,10 +76,15 @@ class Search {
       hingesOf_[in.hinges[h].v].push_back(h);
     }
     slots_.assign(in.hinges.size(), params.uUp ? SlotPair::UpDown : SlotPair::DownUp);
-    for (int p = 0; p < n_; ++p) {
-      cutters_.emplace_back(in.patches[p].shape, params, in.tolerance);
-      lines_.emplace_back(in.patches[p].shape, VerticalLines::slotLines(patchHinges(in_, slots_, p), params));
-    }
+    // Each patch's own tools and first state depend on nothing else: both cores at once.
+    cutters_.resize(n_);
+    lines_.resize(n_);
+    parallelFor(static_cast<size_t>(n_), [&](size_t p) {
+      const Region2d& shape = in.patches[p].shape;
+      cutters_[p] = std::make_unique<SlotCutter>(shape, params, in.tolerance);
+      lines_[p] = std::make_unique<VerticalLines>(
+          shape, VerticalLines::slotLines(patchHinges(in_, slots_, static_cast<int>(p)), params));
+    });
     locks_.assign(static_cast<size_t>(n_) * n_, 0);
     state_.resize(n_);
     parallelFor(static_cast<size_t>(n_),
@@ -127,8 +132,8 @@ class Search {
   std::shared_ptr<const PatchState> evaluatePatch(int p, const std::vector<SlotPair>& slots) const {
     const PatchShape& ps = in_.patches[p];
     auto st = std::make_shared<PatchState>();
-    st->cuts = planSlots(lines_[p], patchHinges(in_, slots, p), params_);
-    st->slotted = cutters_[p].cut(slotRegion(st->cuts, params_), &st->pieces);
+    st->cuts = planSlots(*lines_[p], patchHinges(in_, slots, p), params_);
+    st->slotted = cutters_[p]->cut(slotRegion(st->cuts, params_), &st->pieces);
     st->holes = holeLoops(st->slotted, ps.position);
     const bool isU = ps.family == Family::U;
     for (const int h : hingesOf_[p]) {
@@ -411,8 +416,8 @@ class Search {
   std::vector<std::vector<int>> hingesOf_;
   std::vector<std::pair<size_t, size_t>> hingeIndex_;  // per hinge: its index in hingesOf_ of u, of v
   std::vector<SlotPair> slots_;
-  std::vector<VerticalLines> lines_;                             // per patch: its shape on its hinge lines
-  std::vector<SlotCutter> cutters_;                              // per patch
+  std::vector<std::unique_ptr<VerticalLines>> lines_;            // per patch: its shape on its hinge lines
+  std::vector<std::unique_ptr<SlotCutter>> cutters_;             // per patch
   std::vector<std::shared_ptr<const PatchState>> state_;         // per patch, for slots_
   std::map<PatchKey, std::shared_ptr<const PatchState>> cache_;  // states the current step computed
   std::vector<int> locks_;  // interlocked hole pairs, [U-patch * n + V-patch]
