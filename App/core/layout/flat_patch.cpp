@@ -151,27 +151,28 @@ std::vector<Vec2> sample(const CutElement& e, double deflection) {
   return points;
 }
 
-std::vector<FlatPatch> flattenPatches(const Design& d) {
+FlatPatch flattenPatch(const Design& d, int k) {
   const Arrangement& a = d.arrangement;
+  const PatchPlane plane = patchPlane(a, k);
+  FlatPatch flat;
+  flat.patch = k;
+  flat.id = patchId(a.scaffold, k);
+  flat.family = a.scaffold.patches[k].family;
+  flat.outline = d.patches[k].outline;
+  flat.cut = cutLoops(kerfCompensated(d.patches[k].shape, d.realization.params.kerf),
+                      PlaneMap{plane.xAxis, plane.yAxis});
+  const LabelPaper paper = labelPaper(flat.outline);
+  flat.name = placeName(paper, flat.id);
+  const double partnerHeight = std::max(flat.name.height * 0.6, 1.0);
+  flat.partners = placePartners(paper, partnerSpots(d, k), {flat.name}, partnerHeight, flat.partnersMissing);
+  return flat;
+}
+
+std::vector<FlatPatch> flattenPatches(const Design& d) {
   // Patches are independent (OCCT on separate shapes, Clipper on separate paths): one per
   // core, each written to its own slot, so the result does not depend on the schedule.
   std::vector<FlatPatch> out(d.patches.size());
-  parallelFor(d.patches.size(), [&](size_t index) {
-    const int k = static_cast<int>(index);
-    const PatchPlane plane = patchPlane(a, k);
-    FlatPatch& flat = out[index];
-    flat.patch = k;
-    flat.id = patchId(a.scaffold, k);
-    flat.family = a.scaffold.patches[k].family;
-    flat.outline = d.patches[k].outline;
-    flat.cut = cutLoops(kerfCompensated(d.patches[k].shape, d.realization.params.kerf),
-                        PlaneMap{plane.xAxis, plane.yAxis});
-    const LabelPaper paper = labelPaper(flat.outline);
-    flat.name = placeName(paper, flat.id);
-    const double partnerHeight = std::max(flat.name.height * 0.6, 1.0);
-    flat.partners =
-        placePartners(paper, partnerSpots(d, k), {flat.name}, partnerHeight, flat.partnersMissing);
-  });
+  parallelFor(d.patches.size(), [&](size_t index) { out[index] = flattenPatch(d, static_cast<int>(index)); });
   return out;
 }
 

@@ -54,6 +54,8 @@ struct FlatPatch {
 // Every patch of a design laid flat and labelled; `kerf` moves the cut paths as
 // SlotParams::kerf says (outline and labels stay the paper's).
 std::vector<FlatPatch> flattenPatches(const Design& design);
+// One of them (patch index into design.patches); patches are independent of each other.
+FlatPatch flattenPatch(const Design& design, int patch);
 
 // A point of a cut element at parameter t in [0, 1] (used for sampling and bounds).
 Vec2 pointAt(const CutElement& e, double t);

@@ -2,10 +2,11 @@
 #include "layout/layout.hpp"
 
 #include <cmath>
-#include <future>
+#include <exception>
 
 #include "layout/labels.hpp"
 #include "pipeline/design.hpp"
+#include "support/parallel.hpp"
 
 namespace sliceform {
 namespace {
@@ -45,13 +46,24 @@ SheetLayout layOut(const Design& design, const SheetSpec& sheet) {
     outlines.push_back(design.patches[k].outline);
     names.push_back(patchId(design.arrangement.scaffold, static_cast<int>(k)));
   }
-  // Nesting reads only the outlines, not the labels: it runs on a thread of its own while
-  // the patches are flattened and labelled on every core. Its result is the same whatever
-  // the schedule; a flattening error still comes first (the future waits for the nest).
-  std::future<Packing> nested =
-      std::async(std::launch::async, [&] { return nestOnSheets(outlines, names, sheet); });
-  layout.patches = flattenPatches(design);
-  layout.packing = nested.get();
+  // Nesting reads only the outlines, not the labels: it is one more task beside the
+  // patches, handed out first (it takes longest), so one core nests while the others
+  // flatten and label the patches. Every task writes its own slot: the result does not
+  // depend on the schedule. A flattening error still comes first, as when nesting followed.
+  layout.patches.resize(design.patches.size());
+  std::exception_ptr nestFailure;
+  parallelFor(layout.patches.size() + 1, [&](size_t task) {
+    if (task > 0) {
+      layout.patches[task - 1] = flattenPatch(design, static_cast<int>(task - 1));
+      return;
+    }
+    try {
+      layout.packing = nestOnSheets(outlines, names, sheet);
+    } catch (...) {
+      nestFailure = std::current_exception();
+    }
+  });
+  if (nestFailure) std::rethrow_exception(nestFailure);
   layout.shelf = shelfPack(outlines, names, sheet);
   return layout;
 }
