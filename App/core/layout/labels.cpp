@@ -299,9 +299,16 @@ Label placeName(const LabelPaper& paper, const std::string& id) {
     // Its round corners may be coarse: a rounded erosion's corners lie on the true arcs and
     // cut inside them, so it only keeps more than the exact erosion, never less, and calls
     // no region empty that a disc, let alone a box, fits (freeFor decides the rest).
-    if (erode(inner, height / 2, kCoarseTolerance).empty()) continue;
+    const Region2d disc = erode(inner, height / 2, kCoarseTolerance);
+    if (disc.empty()) continue;
+    // Every centre that holds the box holds the disc too: the room lies within the disc's
+    // erosion, so only the boundary near that needs sweeping (a hundredth of a millimetre
+    // more for the rounding of the box to Clipper's units).
+    Box2 within = disc.bounds();
+    within.min = {within.min.x - 0.01, within.min.y - 0.01};
+    within.max = {within.max.x + 0.01, within.max.y + 0.01};
     for (const bool vertical : {false, true}) {
-      const Region2d room = freeFor(inner, {}, halfSize(id, height, vertical), nullptr);
+      const Region2d room = freeFor(inner, {}, halfSize(id, height, vertical), &within);
       if (!room.empty()) return setLabel(id, deepestPoint(room), height, vertical);
     }
   }
