@@ -99,11 +99,11 @@ void addRun(const Path& run, int sx, int sy, cInt w, cInt h, Paths& out) {
 }
 
 // The bands the boundary of `region` sweeps with a box of half size (w, h), for the edges
-// whose band can reach `near` (all of them when there is no `near`). A box centred at p
+// whose band can reach `near`. A box centred at p
 // lies in the region exactly when p is in the region and outside every band: a box the
 // boundary does not cross holds either none or all of a loop, and then it holds the
 // loop's vertices, which the bands of that loop's edges cover.
-Paths sweptBands(const Region2d& region, cInt w, cInt h, const UnitBox* near) {
+Paths sweptBands(const Region2d& region, cInt w, cInt h, const UnitBox& near) {
   Paths bands;
   Path run;
   int sx = 0, sy = 0;  // the run's heading; 0 while its edges left it open
@@ -115,13 +115,11 @@ Paths sweptBands(const Region2d& region, cInt w, cInt h, const UnitBox* near) {
   for (const Path& loop : region.paths()) {
     for (size_t i = 0, n = loop.size(); i < n; ++i) {
       const IntPoint a = loop[i], b = loop[(i + 1) % n];
-      if (near) {
-        const UnitBox reach{{std::min(a.X, b.X) - w, std::min(a.Y, b.Y) - h},
-                            {std::max(a.X, b.X) + w, std::max(a.Y, b.Y) + h}};
-        if (!reach.meets(*near)) {
-          flush();
-          continue;
-        }
+      const UnitBox reach{{std::min(a.X, b.X) - w, std::min(a.Y, b.Y) - h},
+                          {std::max(a.X, b.X) + w, std::max(a.Y, b.Y) + h}};
+      if (!reach.meets(near)) {
+        flush();
+        continue;
       }
       const int dx = (b.X > a.X) - (b.X < a.X), dy = (b.Y > a.Y) - (b.Y < a.Y);
       if ((dx && sx && dx != sx) || (dy && sy && dy != sy)) flush();
@@ -212,18 +210,16 @@ Vec2 halfSize(const std::string& text, double height, bool vertical) {
 
 // The paper a label of half size `half` may have its centre on: inside `inner` (the paper
 // eroded by the edge margin) with its whole box, clear of the labels already placed, and
-// inside `window` when one is given. A window needs only the boundary near it: the window
+// inside `window`. A window needs only the boundary near it: the window
 // minus the bands of the nearby edges and the labels' boxes falls into pieces that each lie
 // wholly inside or wholly outside `inner` (no band crosses them, and a box that stays clear
 // of the boundary cannot change sides), so one vertex of each piece decides it.
-Region2d freeFor(const Region2d& inner, const std::vector<Label>& taken, Vec2 half, const Box2* window) {
+Region2d freeFor(const Region2d& inner, const std::vector<Label>& taken, Vec2 half, const Box2& window) {
   if (inner.empty()) return {};
   const cInt w = Region2d::toUnits(half.x), h = Region2d::toUnits(half.y);
-  UnitBox near;
-  if (window)
-    near = {{Region2d::toUnits(window->min.x), Region2d::toUnits(window->min.y)},
-            {Region2d::toUnits(window->max.x), Region2d::toUnits(window->max.y)}};
-  Paths clip = sweptBands(inner, w, h, window ? &near : nullptr);
+  const UnitBox near{{Region2d::toUnits(window.min.x), Region2d::toUnits(window.min.y)},
+                     {Region2d::toUnits(window.max.x), Region2d::toUnits(window.max.y)}};
+  Paths clip = sweptBands(inner, w, h, near);
   // Labels already set keep their distance: their boxes, grown by this one and the gap,
   // join the bands (only those that reach the window).
   for (const Label& l : taken) {
@@ -231,16 +227,10 @@ Region2d freeFor(const Region2d& inner, const std::vector<Label>& taken, Vec2 ha
     const double hx = other.x + half.x + kGap, hy = other.y + half.y + kGap;
     const UnitBox box{{Region2d::toUnits(l.at.x - hx), Region2d::toUnits(l.at.y - hy)},
                       {Region2d::toUnits(l.at.x + hx), Region2d::toUnits(l.at.y + hy)}};
-    if (!window || box.meets(near)) clip.push_back(boxPath(box));
+    if (box.meets(near)) clip.push_back(boxPath(box));
   }
   ClipperLib::Clipper clipper;
   clipper.AddPaths(clip, ClipperLib::ptClip, true);
-  if (!window) {
-    clipper.AddPaths(inner.paths(), ClipperLib::ptSubject, true);
-    Paths room;
-    clipper.Execute(ClipperLib::ctDifference, room, ClipperLib::pftNonZero, ClipperLib::pftNonZero);
-    return Region2d::fromPaths(room, FillRule::NonZero);
-  }
   clipper.AddPath(boxPath(near), ClipperLib::ptSubject, true);
   ClipperLib::PolyTree pieces;
   clipper.Execute(ClipperLib::ctDifference, pieces, ClipperLib::pftNonZero, ClipperLib::pftNonZero);
@@ -308,7 +298,7 @@ Label placeName(const LabelPaper& paper, const std::string& id) {
     within.min = {within.min.x - 0.01, within.min.y - 0.01};
     within.max = {within.max.x + 0.01, within.max.y + 0.01};
     for (const bool vertical : {false, true}) {
-      const Region2d room = freeFor(inner, {}, halfSize(id, height, vertical), &within);
+      const Region2d room = freeFor(inner, {}, halfSize(id, height, vertical), within);
       if (!room.empty()) return setLabel(id, deepestPoint(room), height, vertical);
     }
   }
@@ -327,7 +317,7 @@ std::vector<Label> placePartners(const LabelPaper& paper, const std::vector<Labe
       const double reach = s.slotWidth / 2 + kGap + 2 * half.x + kGap;
       const double mid = (s.w.lo + s.w.hi) / 2, halfSpan = (s.w.hi - s.w.lo) / 2 + half.y;
       const Box2 near{{s.x - reach, mid - halfSpan}, {s.x + reach, mid + halfSpan}, false};
-      const Region2d room = freeFor(inner, all, half, &near);
+      const Region2d room = freeFor(inner, all, half, near);
       if (room.empty()) continue;
       const double side = s.slotWidth / 2 + kGap + half.x;
       const Vec2 right = nearestPoint(room, {s.x + side, s.y}), left = nearestPoint(room, {s.x - side, s.y});
