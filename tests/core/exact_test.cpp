@@ -15,6 +15,7 @@
 #include "arrangement/arrange.hpp"
 #include "assembly/fold.hpp"
 #include "exact/patch_faces.hpp"
+#include "geometry/simplify.hpp"
 #include "realization/realize.hpp"
 #include "support/error.hpp"
 #include "test_support.hpp"
@@ -155,7 +156,7 @@ TEST(ExactPatches, MeshOutlinesAreSimplifiedWithinTheTolerance) {
   const Region2d slot = Region2d::fromLoops({{{-0.2, 10}, {0.2, 10}, {0.2, 40}, {-0.2, 40}}});
   const Region2d hole = Region2d::fromLoops({{{-10, -10}, {-5, -10}, {-5, -5}, {-10, -5}}});
   const Region2d patch = disc.subtract(slot).subtract(hole);
-  const Region2d simpler = simplifiedOutline(patch, 0.01);
+  const Region2d simpler = simplified(patch, 0.01);
   size_t before = 0, after = 0;
   for (const auto& l : patch.loops()) before += l.size();
   for (const auto& l : simpler.loops()) after += l.size();

@@ -4,10 +4,16 @@
 #include <cmath>
 #include <limits>
 
+#include "geometry/simplify.hpp"
 #include "support/error.hpp"
 #include "support/parallel.hpp"
 
 namespace sliceform {
+namespace {
+
+constexpr double kErrorTolerance = 0.02;  // mm
+
+}  // namespace
 
 double cylinderError(const std::vector<Region2d>& patches, int i, int j, double ds) {
   std::vector<Region2d> run(patches.begin() + i, patches.begin() + j + 1);
@@ -22,9 +28,15 @@ std::vector<std::pair<int, int>> partitionPatches(const std::vector<Region2d>& p
   if (!(tauA >= 0)) throw Error(ErrorKind::BadParameter, "tauA must be zero or positive");
   const int n = static_cast<int>(patches.size());
   if (n == 0) return {};
+  // The errors are measured on the patches simplified within kErrorTolerance: the unions
+  // below are the stage's cost (n x run length of them), and a mesh's sections carry a
+  // point at every triangle they cross. What that changes in an error is at most
+  // tolerance x perimeter x ds a patch, a small fraction of the budget.
+  std::vector<Region2d> coarse(n);
+  parallelFor(static_cast<size_t>(n), [&](size_t k) { coarse[k] = simplified(patches[k], kErrorTolerance); });
   std::vector<double> area(n);
   double volume = 0;
-  for (int k = 0; k < n; ++k) volume += (area[k] = patches[k].area()) * ds;
+  for (int k = 0; k < n; ++k) volume += (area[k] = coarse[k].area()) * ds;
   const double budget = tauA * volume;
 
   // err(i, j) for every run, with the union grown one patch at a time. The error only
@@ -35,10 +47,10 @@ std::vector<std::pair<int, int>> partitionPatches(const std::vector<Region2d>& p
   // Rows are independent: one per core, each writing only its own row.
   parallelFor(static_cast<size_t>(n), [&](size_t row) {
     const int i = static_cast<int>(row);
-    Region2d u = patches[i];
+    Region2d u = coarse[i];
     double sumArea = 0;
     for (int j = i; j < n; ++j) {
-      if (j > i) u = u.unite(patches[j]);
+      if (j > i) u = u.unite(coarse[j]);
       sumArea += area[j];
       err[i][j] = ds * ((j - i + 1) * u.area() - sumArea);
       if (err[i][j] > budget) break;

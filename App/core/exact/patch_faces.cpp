@@ -20,14 +20,11 @@
 #include <gp_Circ.hxx>
 #include <gp_Pln.hxx>
 
-#include <boost/geometry.hpp>
-#include <boost/geometry/geometries/point_xy.hpp>
-#include <boost/geometry/geometries/ring.hpp>
-
 #include <algorithm>
 #include <map>
 #include <sstream>
 
+#include "geometry/simplify.hpp"
 #include "slicing/brep_slicer.hpp"
 #include "support/error.hpp"
 #include "support/occt_guard.hpp"
@@ -182,27 +179,6 @@ std::vector<size_t> sectionsAddingToUnion(const std::vector<Region2d>& sections,
   return kept;
 }
 
-Region2d simplifiedOutline(const Region2d& region, double tolerance) {
-  namespace bg = boost::geometry;
-  using Point = bg::model::d2::point_xy<double>;
-  using Ring = bg::model::ring<Point>;  // closed: the first point again at the end
-  std::vector<Region2d::Loop> loops;
-  for (const Region2d::Loop& loop : region.loops()) {
-    Ring ring, simpler;
-    for (const Vec2& p : loop) ring.push_back({p.x, p.y});
-    ring.push_back(ring.front());
-    bg::simplify(ring, simpler, tolerance);
-    // A loop thinner than the tolerance collapses; keep it as it was rather than lose it.
-    if (simpler.size() < 4) {
-      loops.push_back(loop);
-      continue;
-    }
-    loops.emplace_back();
-    for (size_t i = 0; i + 1 < simpler.size(); ++i) loops.back().push_back({simpler[i].x(), simpler[i].y()});
-  }
-  return Region2d::fromLoops(loops, FillRule::EvenOdd);
-}
-
 TopoDS_Shape facesFromRegion(const Region2d& region, const SliceFrame& frame, double position) {
   std::vector<TopoDS_Shape> out;
   const gp_Pln pln = plane(frame, position);
@@ -268,7 +244,7 @@ std::vector<PatchFace> exactPatches(const Model& model, const Arrangement& a, co
     PatchFace& pf = out[k];
     pf.exact = exact;
     if (!exact) {
-      pf.outline = simplifiedOutline(r.slotted[k], kOutlineDeflection);
+      pf.outline = simplified(r.slotted[k], kOutlineDeflection);
       pf.shape = facesFromRegion(pf.outline, frame, p.position);
       pf.pieces = static_cast<int>(pf.outline.components().size());
       return;

@@ -6,7 +6,7 @@
 //    with ShapeUpgrade_UnifySameDomain, so circles stay circles. Pieces the polygon section
 //    has and the slices do not (small branches the Reeb simplification merged in from other
 //    slices) are added as polygons;
-//  - mesh sources: the polygon section itself, within kOutlineDeflection (simplifiedOutline);
+//  - mesh sources: the polygon section itself, simplified within kOutlineDeflection;
 // then the slots are cut (rectangles, and circles for round ends).
 #pragma once
 
@@ -38,15 +38,11 @@ TopoDS_Shape facesFromRegion(const Region2d& region, const SliceFrame& frame, do
 // result is wires: what the cutter follows, not paper.
 TopoDS_Shape kerfCompensated(const TopoDS_Shape& faces, double kerf);
 
-// How far the output polygons may stray from the exact edges, mm.
+// How far the output polygons may stray from the exact edges, mm. A mesh patch's outline
+// is simplified within it (geometry/simplify.hpp): at 0.01 mm, far below any cutter's kerf,
+// a third of rocker-arm's 26,000 points go, so every file and the layout handle fewer edges
+// (OCCT's STEP writer is quadratic in the edges of a face). Slot corners turn by 90° and stay.
 constexpr double kOutlineDeflection = 0.01;
-
-// A mesh patch's outline with the points that lie within `tolerance` of the line through
-// their neighbours left out (Douglas-Peucker, per loop): a scan's sections turn a degree or
-// two at every triangle they cross, and at 0.01 mm, far below any cutter's kerf, a third
-// of rocker-arm's 26,000 points go. Every file and the layout handle fewer edges (OCCT's
-// STEP writer is quadratic in the edges of a face). Slot corners turn by 90° and stay.
-Region2d simplifiedOutline(const Region2d& region, double tolerance);
 
 // Which of a cylinder's sections (their polygons) add to their union, largest first: a
 // section within `tolerance` (mm) of those already taken is left out. Only these are fused
