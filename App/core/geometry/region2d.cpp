@@ -25,21 +25,6 @@ Paths boolean(const Paths& a, const Paths& b, ClipperLib::ClipType op) {
   return out;
 }
 
-// Each outer contour of the tree with its direct holes is one component; islands inside
-// holes are outers again and start components of their own.
-void collectComponents(const ClipperLib::PolyNode& node, std::vector<Region2d>& out) {
-  for (const ClipperLib::PolyNode* child : node.Childs) {
-    if (child->IsHole()) {
-      collectComponents(*child, out);
-      continue;
-    }
-    Paths paths{child->Contour};
-    for (const ClipperLib::PolyNode* hole : child->Childs) paths.push_back(hole->Contour);
-    out.push_back(Region2d::fromPaths(paths, FillRule::NonZero));
-    for (const ClipperLib::PolyNode* hole : child->Childs) collectComponents(*hole, out);
-  }
-}
-
 }  // namespace
 
 ClipperLib::cInt Region2d::toUnits(double mm) {
@@ -141,7 +126,8 @@ std::vector<Region2d> Region2d::components() const {
   ClipperLib::PolyTree tree;
   clipper.Execute(ClipperLib::ctUnion, tree, ClipperLib::pftNonZero, ClipperLib::pftNonZero);
   std::vector<Region2d> out;
-  collectComponents(tree, out);
+  forEachComponent(tree,
+                   [&](const Paths& paths) { out.push_back(Region2d::fromPaths(paths, FillRule::NonZero)); });
   return out;
 }
 
@@ -152,7 +138,8 @@ std::vector<Region2d> Region2d::subtractComponents(const Region2d& other) const 
   ClipperLib::PolyTree tree;
   clipper.Execute(ClipperLib::ctDifference, tree, ClipperLib::pftNonZero, ClipperLib::pftNonZero);
   std::vector<Region2d> out;
-  collectComponents(tree, out);
+  forEachComponent(tree,
+                   [&](const Paths& paths) { out.push_back(Region2d::fromPaths(paths, FillRule::NonZero)); });
   return out;
 }
 

@@ -70,4 +70,21 @@ class Region2d {
   ClipperLib::Paths paths_;
 };
 
+// Calls fn(paths) for each component of a Clipper result tree: an outer contour with its
+// direct holes (paths.front() the outer). Islands inside holes are outers again and make
+// components of their own.
+template <class Fn>
+void forEachComponent(const ClipperLib::PolyNode& node, Fn&& fn) {
+  for (const ClipperLib::PolyNode* child : node.Childs) {
+    if (child->IsHole()) {
+      forEachComponent(*child, fn);
+      continue;
+    }
+    ClipperLib::Paths paths{child->Contour};
+    for (const ClipperLib::PolyNode* hole : child->Childs) paths.push_back(hole->Contour);
+    fn(paths);
+    for (const ClipperLib::PolyNode* hole : child->Childs) forEachComponent(*hole, fn);
+  }
+}
+
 }  // namespace sliceform

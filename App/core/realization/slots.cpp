@@ -287,20 +287,6 @@ Part makePart(const ClipperLib::Paths& paths) {
   return part;
 }
 
-// As Region2d::components: each outer contour with its direct holes, islands in holes apart.
-void collectParts(const ClipperLib::PolyNode& node, std::vector<Part>& out) {
-  for (const ClipperLib::PolyNode* child : node.Childs) {
-    if (child->IsHole()) {
-      collectParts(*child, out);
-      continue;
-    }
-    ClipperLib::Paths paths{child->Contour};
-    for (const ClipperLib::PolyNode* hole : child->Childs) paths.push_back(hole->Contour);
-    if (paths.front().size() >= 3) out.push_back(makePart(paths));
-    for (const ClipperLib::PolyNode* hole : child->Childs) collectParts(*hole, out);
-  }
-}
-
 // Growing the eroded region back (round corners at every vertex, then a union) is most of
 // the search's time, and it is rarely needed. A connected eroded piece grows into one
 // connected piece that contains it, and two eroded pieces more than 2 neck apart (plus a
@@ -373,7 +359,9 @@ Region2d SlotCutter::cut(const Region2d& slots, int* pieces) const {
   ClipperLib::PolyTree tree;
   clipper.Execute(ClipperLib::ctDifference, tree, ClipperLib::pftNonZero, ClipperLib::pftNonZero);
   std::vector<Part> parts;
-  collectParts(tree, parts);
+  forEachComponent(tree, [&](const ClipperLib::Paths& paths) {
+    if (paths.front().size() >= 3) parts.push_back(makePart(paths));
+  });
   int opened = countApartParts(parts, neck_, crumb_);
   if (opened < 0) opened = openedPieceCountFull(out, neck_, crumb_);
   *pieces = std::max(static_cast<int>(kept.size()), opened - shapePieces_ + 1);
