@@ -266,7 +266,7 @@ void expectNoOverlaps(const SheetLayout& l) {
     for (size_t b = 0; b < a; ++b)
       if (l.packing.placements[a].sheet == l.packing.placements[b].sheet)
         // Apart by the spacing, less what the micrometre placement grid may take.
-        EXPECT_TRUE(onSheet[a].offset(l.sheet.spacing / 2 - 0.01).intersect(onSheet[b]).empty())
+        EXPECT_TRUE(onSheet[a].offset(l.sheet.spacing - 0.01).intersect(onSheet[b]).empty())
             << l.patches[a].id << " and " << l.patches[b].id << " closer than the spacing";
 }
 
