@@ -49,19 +49,18 @@ DesignFilesWriter::~DesignFilesWriter() {
 void DesignFilesWriter::start(const Design& d) {
   if (step_.valid()) return;
   // Posed here, synchronously: the thread then holds its own handles to the faces and
-  // nothing of `d`, which the caller goes on to change and move.
-  TopoDS_Shape assembly = assemble(d.arrangement, d.patches, foldAngle_);
+  // nothing of `d`, which the caller goes on to change and move. The BREP file reuses it.
+  assembly_ = assemble(d.arrangement, d.patches, foldAngle_);
   // Under a name of its own until finish() renames it: the run may still fail (a patch too
   // large for the sheet), and then the earlier run's assembly.step must stay.
   stepFile_ = (fs::path(folder_) / (".assembly-" + std::to_string(::getpid()) + ".step")).string();
   madeFolder_ = !fs::exists(folder_);
-  step_ =
-      std::async(std::launch::async, [assembly = std::move(assembly), file = stepFile_, folder = folder_] {
-        const auto begin = std::chrono::steady_clock::now();
-        createFolder(folder);
-        writeShape(assembly, file);
-        return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - begin).count();
-      });
+  step_ = std::async(std::launch::async, [assembly = assembly_, file = stepFile_, folder = folder_] {
+    const auto begin = std::chrono::steady_clock::now();
+    createFolder(folder);
+    writeShape(assembly, file);
+    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - begin).count();
+  });
 }
 
 DesignFiles DesignFilesWriter::finish(const Model& model, const DesignParams& params, const Design& d,
@@ -101,8 +100,7 @@ DesignFiles DesignFilesWriter::finish(const Model& model, const DesignParams& pa
                          (dir / sheetFileName(static_cast<int>(k), ".svg")).string());
        }},
       {"export glTF, in parallel", [&, to = path("assembly.glb")] { writeGltf(panels, to); }},
-      {"export BREP, in parallel",
-       [&, to = path("assembly.brep")] { writeShape(assemble(d.arrangement, d.patches, foldAngle_), to); }},
+      {"export BREP, in parallel", [&, to = path("assembly.brep")] { writeShape(assembly_, to); }},
       {"export report, in parallel",
        [&, to = path("report.json")] { writeJson(reportJson(model, params, d), to); }},
   };
@@ -130,7 +128,7 @@ DesignFiles DesignFilesWriter::finish(const Model& model, const DesignParams& pa
     }
   writePicturePng(picture, path("assembly.png"));
   clock.lap("export files");
-  // Each file's own time, summed per kind (the sheets' SVG and DXF together).
+  // Each file's own time, summed per kind (the DXF sheets together).
   std::vector<StageTime> own;
   for (size_t k = 0; k < work.size(); ++k) {
     auto same =

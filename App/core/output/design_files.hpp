@@ -4,6 +4,8 @@
 // Shared by the CLI and the FreeCAD workbench so both write the same files.
 #pragma once
 
+#include <TopoDS_Shape.hxx>
+
 #include <functional>
 #include <future>
 #include <string>
@@ -49,6 +51,7 @@ class DesignFilesWriter {
  private:
   std::string folder_;
   double foldAngle_;
+  TopoDS_Shape assembly_;     // the patches at the fold pose, from start()
   std::string stepFile_;      // where the STEP thread writes, renamed by finish()
   bool madeFolder_ = false;   // the folder did not exist before start()
   std::future<double> step_;  // ms the STEP file took

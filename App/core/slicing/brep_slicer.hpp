@@ -27,7 +27,8 @@ inline double exactDeflection(double meshDeflection) {
 }
 
 // Faces only leaves area and region empty: the exact patches need only the faces, and the
-// adaptive area integration and the polygons cost a fifth of a slice.
+// adaptive area integration and the polygons are work they would throw away (4 % of a
+// slice on screw.step in the stage benchmark: 8.26 against 7.95 ms).
 enum class SliceDetail { Measured, FacesOnly };
 
 // `deflection` is the largest distance, in mm, between an edge and its polygon.
