@@ -26,6 +26,9 @@ PARAMETERS = (
      "Paper to keep on each side of a slot"),
     ("MaxSpacing", "App::PropertyLength", "Hinges", 0.0, "max_spacing",
      "Add patches in long cylinders so none is farther apart; 0 is off"),
+    ("MinSpacing", "App::PropertyLength", "Hinges", 0.0, "min_spacing",
+     "Least distance between two patches of one family that overlap seen along their normal, "
+     "so paper is left between their slots; 0 is slot width + MinSlotEdgeDistance"),
     ("Thickness", "App::PropertyLength", "Material", 0.3, "thickness",
      "Material thickness (0.3 mm card, 3 mm plywood)"),
     ("Clearance", "App::PropertyLength", "Material", 0.2, "clearance", "Added to the thickness for the slot width"),

@@ -8,9 +8,11 @@
 #include <BRepPrimAPI_MakeBox.hxx>
 
 #include <algorithm>
+#include <cmath>
 #include <random>
 
 #include "arrangement/arrange.hpp"
+#include "realization/realize.hpp"
 #include "slicing/mesh_slicer.hpp"
 #include "support/error.hpp"
 #include "test_support.hpp"
@@ -235,6 +237,58 @@ TEST(Arrange, MaxSpacingAddsHeldPatches) {
     if (p.family == Family::U) us.push_back(p.position);
   std::sort(us.begin(), us.end());
   for (size_t k = 1; k < us.size(); ++k) EXPECT_LE(us[k] - us[k - 1], 2 * (20 + dense.u.interval));
+}
+
+// A block with a comb of 1 mm teeth 1 mm apart on top: sliced along X every section
+// differs from the last, so every slice would make a cylinder of its own.
+TopoDS_Shape comb() {
+  TopoDS_Shape shape = BRepPrimAPI_MakeBox(gp_Pnt(0, 0, 0), gp_Pnt(100, 40, 20)).Shape();
+  for (int k = 0; k < 50; ++k)
+    shape = BRepAlgoAPI_Fuse(shape, BRepPrimAPI_MakeBox(gp_Pnt(2 * k, 0, 20), gp_Pnt(2 * k + 1, 40, 60)).Shape())
+                .Shape();
+  return shape;
+}
+
+// Outer loops only: what a patch covers seen along its normal.
+Region2d filledOutline(const Region2d& r) {
+  ClipperLib::Paths outer;
+  for (const ClipperLib::Path& p : r.paths())
+    if (ClipperLib::Orientation(p)) outer.push_back(p);
+  return Region2d::fromPaths(outer, FillRule::NonZero);
+}
+
+TEST(Arrange, PatchesOfOneFamilyKeepPaperBetweenTheirSlots) {
+  ArrangementParams params;
+  params.slices = 100;
+  params.u = {1, 0, 0};
+  params.v = {0, 1, 0};
+  params.hinges.slotWidth = 0.5;
+  const Model model = modelFromShape(comb(), "comb");
+  const Arrangement a = arrange(model, params);
+  EXPECT_DOUBLE_EQ(a.minSpacing, 2.5);  // slot width + the 2 mm kept beside a slot
+  EXPECT_TRUE(a.certificate.stable) << a.certificate.reason;
+  const RealizationInput in = realizationInput(a, model.meshDeflection);
+  int stackedPairs = 0;
+  for (size_t i = 0; i < in.patches.size(); ++i) {
+    for (size_t j = i + 1; j < in.patches.size(); ++j) {
+      const PatchShape &p = in.patches[i], &q = in.patches[j];
+      if (p.family != q.family || p.position == q.position) continue;
+      if (filledOutline(p.shape).intersect(filledOutline(q.shape)).empty()) continue;
+      ++stackedPairs;
+      EXPECT_GE(std::fabs(p.position - q.position), a.minSpacing - 1e-9)
+          << patchId(a.scaffold, static_cast<int>(i)) << " and " << patchId(a.scaffold, static_cast<int>(j));
+    }
+  }
+  EXPECT_GT(stackedPairs, 0);
+  // Below the slot width plus that paper, the rule cannot hold: refused, naming the option.
+  params.stabilize.minSpacing = 1;
+  try {
+    arrange(model, params);
+    FAIL() << "expected an error";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.kind(), ErrorKind::BadParameter);
+    EXPECT_NE(std::string(e.what()).find("--min-slot-edge-distance"), std::string::npos);
+  }
 }
 
 }  // namespace

@@ -23,6 +23,7 @@ void checkParams(const ArrangementParams& p) {
     throw Error(ErrorKind::BadParameter, "tauA must be >= 0 and tauM in [0, 1)");
   if (!(p.hinges.minHingeLength >= 0) || !(p.hinges.minSlotEdgeDistance >= 0))
     throw Error(ErrorKind::BadParameter, "hinge length and slot edge distance must be >= 0");
+  minPatchSpacing(p.stabilize, p.hinges);  // throws when below what the slots need
 }
 
 SliceSet sliceFamily(const Model& model, const SliceFrame& frame, const ArrangementParams& p) {
@@ -61,8 +62,11 @@ Arrangement arrange(const Model& model, const ArrangementParams& params) {
   simplifyReebGraph(a.reebV, params.tauM);
   clock.lap("reeb");
 
-  a.uCylinders = approximateCylinders(a.reebU, Family::U, a.u.interval, params.tauA);
-  a.vCylinders = approximateCylinders(a.reebV, Family::V, a.v.interval, params.tauA);
+  // Neighbouring cylinders must be able to hold patches the spacing rule apart.
+  const double spacing = a.minSpacing = minPatchSpacing(params.stabilize, params.hinges);
+  const auto minRun = [&](double interval) { return static_cast<int>(std::ceil(spacing / interval - 1e-9)); };
+  a.uCylinders = approximateCylinders(a.reebU, Family::U, a.u.interval, params.tauA, minRun(a.u.interval));
+  a.vCylinders = approximateCylinders(a.reebV, Family::V, a.v.interval, params.tauA, minRun(a.v.interval));
   clock.lap("gca");
 
   const HingeTable table(a.u, a.v, a.uCylinders, a.vCylinders, params.hinges);

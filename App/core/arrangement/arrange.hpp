@@ -34,6 +34,7 @@ struct Arrangement {
   ReebGraph reebU, reebV;
   std::vector<Cylinder> uCylinders, vCylinders;
   Scaffold scaffold;
+  double minSpacing = 0;  // mm, the spacing rule in force (minPatchSpacing)
   Certificate certificate;
   Quality quality;
   std::vector<StageTime> timings;

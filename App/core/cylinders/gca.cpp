@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 #include "cylinders/gca.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -24,10 +25,12 @@ double cylinderError(const std::vector<Region2d>& patches, int i, int j, double 
 }
 
 std::vector<std::pair<int, int>> partitionPatches(const std::vector<Region2d>& patches, double ds,
-                                                  double tauA) {
+                                                  double tauA, int minRun) {
   if (!(tauA >= 0)) throw Error(ErrorKind::BadParameter, "tauA must be zero or positive");
   const int n = static_cast<int>(patches.size());
   if (n == 0) return {};
+  minRun = std::max(1, minRun);
+  if (n < 2 * minRun) return {{0, n - 1}};  // no two groups fit: one cylinder
   // The errors are measured on the patches simplified within kErrorTolerance: the unions
   // below are the stage's cost (n x run length of them), and a mesh's sections carry a
   // point at every triangle they cross. What that changes in an error is at most
@@ -53,7 +56,8 @@ std::vector<std::pair<int, int>> partitionPatches(const std::vector<Region2d>& p
       if (j > i) u = u.unite(coarse[j]);
       sumArea += area[j];
       err[i][j] = ds * ((j - i + 1) * u.area() - sumArea);
-      if (err[i][j] > budget) break;
+      // Runs of up to 2 minRun - 1 slices are always measured: any edge splits into them.
+      if (err[i][j] > budget && j - i + 1 >= 2 * minRun - 1) break;
     }
   });
   // D[m][i]: least error of patches i..n-1 in m groups (eq. 2, suffix form); choice[m][i]
@@ -61,11 +65,21 @@ std::vector<std::pair<int, int>> partitionPatches(const std::vector<Region2d>& p
   std::vector<std::vector<double>> best{std::vector<double>(n + 1, kInf)};
   std::vector<std::vector<int>> choice{std::vector<int>(n + 1, -1)};
   best[0][n] = 0;
-  for (int m = 1; m <= n; ++m) {
+  const auto groupsOf = [&](int m) {
+    std::vector<std::pair<int, int>> groups;
+    for (int i = 0, left = m; i < n; --left) {
+      const int k = choice[left][i];
+      groups.emplace_back(i, k);
+      i = k + 1;
+    }
+    return groups;
+  };
+  int least = -1;  // the group count with the least error, when none fits the budget
+  for (int m = 1; m * minRun <= n; ++m) {
     best.emplace_back(n + 1, kInf);
     choice.emplace_back(n + 1, -1);
     for (int i = 0; i < n; ++i) {
-      for (int k = i; k < n && err[i][k] < kInf; ++k) {
+      for (int k = i + minRun - 1; k < n && err[i][k] < kInf; ++k) {
         const double total = err[i][k] + best[m - 1][k + 1];
         if (total < best[m][i]) {
           best[m][i] = total;
@@ -73,25 +87,21 @@ std::vector<std::pair<int, int>> partitionPatches(const std::vector<Region2d>& p
         }
       }
     }
-    if (best[m][0] <= budget) {
-      std::vector<std::pair<int, int>> groups;
-      for (int i = 0, left = m; i < n; --left) {
-        const int k = choice[left][i];
-        groups.emplace_back(i, k);
-        i = k + 1;
-      }
-      return groups;
-    }
+    if (best[m][0] <= budget) return groupsOf(m);
+    if (best[m][0] < kInf && (least < 0 || best[m][0] < best[least][0])) least = m;
   }
-  // Every patch alone has zero error, so m = n always fits: unreachable.
-  throw Error(ErrorKind::Geometry, "cylinder approximation found no partition");
+  // With minRun 1 every patch alone has zero error, so m = n always fits; with longer runs
+  // a partition into runs of minRun to 2 minRun - 1 slices, all measured, always exists.
+  if (least < 0) throw Error(ErrorKind::Geometry, "cylinder approximation found no partition");
+  return groupsOf(least);
 }
 
-std::vector<Cylinder> approximateCylinders(const ReebGraph& graph, Family family, double ds, double tauA) {
+std::vector<Cylinder> approximateCylinders(const ReebGraph& graph, Family family, double ds, double tauA,
+                                           int minRun) {
   std::vector<Cylinder> out;
   for (size_t e = 0; e < graph.edges.size(); ++e) {
     const ReebEdge& edge = graph.edges[e];
-    for (const auto& [i, j] : partitionPatches(edge.patches, ds, tauA)) {
+    for (const auto& [i, j] : partitionPatches(edge.patches, ds, tauA, minRun)) {
       Cylinder c;
       c.family = family;
       c.reebEdge = static_cast<int>(e);

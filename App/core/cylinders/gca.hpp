@@ -25,11 +25,16 @@ struct Cylinder {
 // groups whose summed error (1) is at most tauA times the volume of the patches,
 // ds * sum(area). Decision: tauA is relative to the volume of the part being split, so
 // the same tauA means the same fidelity for a small horn and a large body.
+// Every group spans at least `minRun` slices (the whole edge when it is shorter): the
+// patches of two neighbouring cylinders must lie the spacing rule apart, which two
+// cylinders of a slice or two cannot give. Where no such partition fits the budget, the
+// one with the least error is taken.
 std::vector<std::pair<int, int>> partitionPatches(const std::vector<Region2d>& patches, double ds,
-                                                  double tauA);
+                                                  double tauA, int minRun = 1);
 
 // Cylinders of every edge of a (simplified) Reeb graph.
-std::vector<Cylinder> approximateCylinders(const ReebGraph& graph, Family family, double ds, double tauA);
+std::vector<Cylinder> approximateCylinders(const ReebGraph& graph, Family family, double ds, double tauA,
+                                           int minRun = 1);
 
 // Volume error (1) of the cylinder of patches[i..j]: ds * sum(area(union) - area(p_k)).
 double cylinderError(const std::vector<Region2d>& patches, int i, int j, double ds);

@@ -36,6 +36,7 @@ class HingeTable {
   // sections, if that is long enough to hold; empty (lo >= hi) when the segment does not
   // hold. Slots start from the middle of the grip, so the promised paper is there.
   Interval grip(int a, int i, int b, int j, const Interval& segment) const;
+  const HingeRules& rules() const { return rules_; }
 
  private:
   // Sections of U-cylinder a on the line of V-slice j: full[a][j], eroded; and mirrored.

@@ -4,7 +4,11 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <map>
 #include <set>
+#include <sstream>
+
+#include "support/error.hpp"
 
 namespace sliceform {
 namespace {
@@ -18,8 +22,13 @@ struct Candidate {
 class Builder {
  public:
   Builder(const SliceSet& u, const SliceSet& v, const std::vector<Cylinder>& cu,
-          const std::vector<Cylinder>& cv, const HingeTable& table)
-      : u_(u), v_(v), cu_(cu), cv_(cv), table_(table) {}
+          const std::vector<Cylinder>& cv, const HingeTable& table, double minSpacing)
+      : u_(u), v_(v), cu_(cu), cv_(cv), table_(table), minSpacing_(minSpacing) {
+    // Slices a pitch apart are the rule apart.
+    pitch_[0] = std::max(1, static_cast<int>(std::ceil(minSpacing / u.interval - 1e-9)));
+    pitch_[1] = std::max(1, static_cast<int>(std::ceil(minSpacing / v.interval - 1e-9)));
+  }
+  int pitch_[2] = {1, 1};  // per family, U and V
 
   Scaffold scaffold;
 
@@ -29,14 +38,22 @@ class Builder {
     return cyl.section.area() * (cyl.lastSlice - cyl.firstSlice + 1);
   }
 
-  // The slices of a cylinder, middle first: the middle patch shows the cylinder best.
+  // The slices of a cylinder, those on the family's grid first (every pitch_-th slice,
+  // pitch_ slices being the spacing rule), then middle first: the middle patch shows the
+  // cylinder best, and patches on the grid never stand in each other's way (on one slice
+  // they lie side by side, else a pitch apart). Measured on man.off: silhouette IoU
+  // 0.815/0.880 middle first, 0.934/0.915 grid first.
   std::vector<int> slicesMiddleOut(Family f, int c) const {
     const Cylinder& cyl = cylinders(f)[c];
     std::vector<int> out;
     for (int k = cyl.firstSlice; k <= cyl.lastSlice; ++k) out.push_back(k);
     const double middle = 0.5 * (cyl.firstSlice + cyl.lastSlice);
-    std::stable_sort(out.begin(), out.end(),
-                     [&](int a, int b) { return std::fabs(a - middle) < std::fabs(b - middle); });
+    const int pitch = pitch_[f == Family::U ? 0 : 1];
+    std::stable_sort(out.begin(), out.end(), [&](int a, int b) {
+      const bool ga = a % pitch == 0, gb = b % pitch == 0;
+      if (ga != gb) return ga;
+      return std::fabs(a - middle) < std::fabs(b - middle);
+    });
     return out;
   }
 
@@ -65,6 +82,18 @@ class Builder {
   }
 
   double pos(const Candidate& c) const { return (c.family == Family::U ? u_ : v_).slices[c.slice].position; }
+
+  // The spacing rule: no placed patch of c's family closer than minSpacing whose outline,
+  // seen along the normal, overlaps c's. Patches of one slice lie side by side, not stacked.
+  bool spaced(const Candidate& c) const {
+    for (const ScaffoldPatch& q : scaffold.patches) {
+      if (q.family != c.family || q.slice == c.slice) continue;
+      if (std::fabs(q.position - pos(c)) < minSpacing_ + kSpacingSlack && stacked(c.family, c.cylinder, q.cylinder))
+        return false;
+    }
+    return true;
+  }
+  bool allowed(const Candidate& c) const { return !placed(c) && spaced(c); }
 
   void place(const Candidate& c) {
     const SliceSet& set = c.family == Family::U ? u_ : v_;
@@ -103,7 +132,7 @@ class Builder {
     Candidate best[4];
     for (size_t q1 = 0; q1 < vs.size(); ++q1) {
       for (size_t q2 = q1 + 1; q2 < vs.size(); ++q2) {
-        if (vs[q1].slice == vs[q2].slice) continue;
+        if (vs[q1].slice == vs[q2].slice || !apart(vs[q1], vs[q2])) continue;
         const double sepV = std::fabs(pos(vs[q1]) - pos(vs[q2])) / std::max(extentV, 1e-9);
         if (std::min(sepV, 0.25) <= bestScore) continue;
         int first = -1, far = -1;  // a held U-patch, and the held one farthest from it
@@ -112,6 +141,8 @@ class Builder {
             const int p = static_cast<int>(64 * w + __builtin_ctzll(bits));
             if (first < 0)
               first = p;
+            else if (!apart(us[p], us[first]))
+              continue;
             else if (far < 0 ||
                      std::fabs(pos(us[p]) - pos(us[first])) > std::fabs(pos(us[far]) - pos(us[first])))
               far = p;
@@ -135,7 +166,7 @@ class Builder {
   bool attach(Family f, int c) {
     for (int k : slicesMiddleOut(f, c)) {
       const Candidate cand{f, c, k};
-      if (!placed(cand) && pins(cand) >= 2) {
+      if (allowed(cand) && pins(cand) >= 2) {
         place(cand);
         return true;
       }
@@ -150,7 +181,7 @@ class Builder {
     int bestScore = 0;
     for (Family f : {Family::U, Family::V}) {
       for (const Candidate& cand : candidates(f)) {
-        if (placed(cand) || pins(cand) < 2) continue;
+        if (!allowed(cand) || pins(cand) < 2) continue;
         int score = 0;
         for (const auto& [g, c] : uncovered) {
           if (g == f) continue;
@@ -187,7 +218,7 @@ class Builder {
             for (const ScaffoldPatch& p : scaffold.patches)
               if (p.family == f && p.cylinder == c)
                 gap = std::min(gap, std::fabs(p.position - set.slices[k].position));
-            if (gap > bestGap && pins({f, c, k}) >= 2) {
+            if (gap > bestGap && allowed({f, c, k}) && pins({f, c, k}) >= 2) {
               bestGap = gap;
               bestSlice = k;
             }
@@ -205,6 +236,42 @@ class Builder {
   const std::vector<Cylinder>& cu_;
   const std::vector<Cylinder>& cv_;
   const HingeTable& table_;
+  double minSpacing_;
+  // Whether two cylinders' outlines (holes filled) overlap seen along their family's
+  // normal, by pair; filled because a patch seen through another's hole still has its
+  // slots beside the other's on every partner that crosses both.
+  mutable std::map<std::tuple<Family, int, int>, bool> stacked_;
+  // Positions are slice centres computed in floating point; a gap of exactly minSpacing
+  // must not pass by a rounding error.
+  static constexpr double kSpacingSlack = 1e-6;
+
+  bool stacked(Family f, int a, int b) const {
+    if (a > b) std::swap(a, b);
+    const auto key = std::make_tuple(f, a, b);
+    const auto it = stacked_.find(key);
+    if (it != stacked_.end()) return it->second;
+    const Region2d& ra = cylinders(f)[a].section;
+    const Region2d& rb = cylinders(f)[b].section;
+    const Box2 ba = ra.bounds(), bb = rb.bounds();
+    bool overlap = !ba.empty && !bb.empty && ba.min.x < bb.max.x && bb.min.x < ba.max.x &&
+                   ba.min.y < bb.max.y && bb.min.y < ba.max.y;
+    if (overlap) overlap = !filled(ra).intersect(filled(rb)).empty();
+    stacked_.emplace(key, overlap);
+    return overlap;
+  }
+
+  static Region2d filled(const Region2d& r) {
+    ClipperLib::Paths outer;
+    for (const ClipperLib::Path& p : r.paths())
+      if (ClipperLib::Orientation(p)) outer.push_back(p);
+    return Region2d::fromPaths(outer, FillRule::NonZero);
+  }
+
+  // Two candidates of one family that may both be placed under the spacing rule.
+  bool apart(const Candidate& a, const Candidate& b) const {
+    return a.slice == b.slice || std::fabs(pos(a) - pos(b)) >= minSpacing_ + kSpacingSlack ||
+           !stacked(a.family, a.cylinder, b.cylinder);
+  }
 
   bool holds(const Candidate& p, const Candidate& q) const {
     return holds(p, ScaffoldPatch{q.family, q.cylinder, q.slice, 0});
@@ -212,6 +279,19 @@ class Builder {
 };
 
 }  // namespace
+
+double minPatchSpacing(const StabilizeOptions& options, const HingeRules& rules) {
+  const double least = rules.slotWidth + rules.minSlotEdgeDistance;
+  if (options.minSpacing == 0) return least;
+  if (!(options.minSpacing >= least) || !std::isfinite(options.minSpacing)) {
+    std::ostringstream out;
+    out << "the minimum patch spacing must be at least the slot width plus the paper kept beside a slot ("
+        << least << " mm here), so that paper is left between two neighbouring slots; lower "
+        << "--min-slot-edge-distance to allow closer patches";
+    throw Error(ErrorKind::BadParameter, out.str());
+  }
+  return options.minSpacing;
+}
 
 std::string patchId(const Scaffold& scaffold, int patch) {
   const Family f = scaffold.patches[patch].family;
@@ -223,7 +303,7 @@ std::string patchId(const Scaffold& scaffold, int patch) {
 Scaffold stabilize(const SliceSet& u, const SliceSet& v, const std::vector<Cylinder>& uCylinders,
                    const std::vector<Cylinder>& vCylinders, const HingeTable& table,
                    const StabilizeOptions& options) {
-  Builder b(u, v, uCylinders, vCylinders, table);
+  Builder b(u, v, uCylinders, vCylinders, table, minPatchSpacing(options, table.rules()));
   std::vector<std::pair<Family, int>> required;
   for (Family f : {Family::U, Family::V}) {
     const bool needed =

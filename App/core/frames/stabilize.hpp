@@ -23,7 +23,15 @@ namespace sliceform {
 struct StabilizeOptions {
   Scheme scheme = Scheme::Both;
   double maxSpacing = 0;  // mm; > 0 adds patches in long cylinders (Fig. 16b), 0 = off
+  // mm; two patches of one family whose outlines overlap seen along their normal are at
+  // least this far apart, so their slots on a common partner leave paper between them.
+  // 0 = the least that keeps min_slot_edge_distance there (minPatchSpacing()).
+  double minSpacing = 0;
 };
+
+// The spacing rule in force: `options.minSpacing`, or when 0, one slot width plus the
+// paper the design keeps beside any slot. Throws BadParameter for a value below that.
+double minPatchSpacing(const StabilizeOptions& options, const HingeRules& rules);
 
 Scaffold stabilize(const SliceSet& u, const SliceSet& v, const std::vector<Cylinder>& uCylinders,
                    const std::vector<Cylinder>& vCylinders, const HingeTable& table,

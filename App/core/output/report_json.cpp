@@ -62,6 +62,7 @@ json reportJson(const Model& model, const DesignParams& params, const Design& d)
                        {"tau_m", p.tauM},
                        {"scheme", schemeName(p.stabilize.scheme)},
                        {"max_spacing_mm", p.stabilize.maxSpacing},
+                       {"min_spacing_mm", a.minSpacing},
                        {"min_hinge_length_mm", p.hinges.minHingeLength},
                        {"min_slot_edge_distance_mm", p.hinges.minSlotEdgeDistance},
                        {"thickness_mm", params.slots.thickness},
