@@ -80,10 +80,20 @@ void printRealization(const Design& d, const DesignParams& params) {
               d.certificate.stable ? "yes" : "NO", d.certificate.nullity, r.lostPins);
   std::printf("slots      %.2f mm wide; smallest slot-to-edge distance %.2f mm; shortest hinge %.2f mm\n",
               params.slots.width(), r.minSlotEdgeDistance, r.shortestHinge);
+  if (d.emitted.closest.first >= 0)
+    std::printf("spacing    closest stacked patches %.2f mm apart (%s, %s), %.2f mm of paper between their "
+                "slots (rule: %.2f mm apart)\n",
+                d.emitted.minPatchSpacing, patchId(d.arrangement.scaffold, d.emitted.closest.first).c_str(),
+                patchId(d.arrangement.scaffold, d.emitted.closest.second).c_str(),
+                d.emitted.minPatchSpacing - params.slots.width(), d.arrangement.minSpacing);
+  std::printf("collisions %zu U/V pair(s) overlapping along their common line\n", d.emitted.collisions.size());
   int exact = 0;
   for (const PatchFace& p : d.patches) exact += p.exact ? 1 : 0;
-  std::printf("exact      %d of %zu patches from the BRep's exact sections, the others polygons\n", exact,
+  std::printf("exact      %d of %zu patches from the BRep's exact sections, the others polygons", exact,
               d.patches.size());
+  if (d.exactReplaced > 0)
+    std::printf(" (%d exact face(s) broke a rule their polygon keeps and were replaced)", d.exactReplaced);
+  std::printf("\n");
   std::printf("assembly   %s:",
               r.assemblyChecked ? "order checked pairwise" : "ORDER NOT FREE of interlocks");
   for (const int k : r.assemblyOrder) std::printf(" %s", patchId(d.arrangement.scaffold, k).c_str());
@@ -218,15 +228,12 @@ void runDesign(DesignOptions o) {
   if (!o.output.empty()) writeOutputs(model, o.params, d, o, readTime, *writer);
   // Never hand on a design that cannot be built silently: the files are written so the
   // problem can be looked at, and the exit code says it failed.
-  if (!a.certificate.stable)
-    throw Error(ErrorKind::Geometry, "the scaffold is not stable: " + a.certificate.reason);
-  if (!d.certificate.stable)
-    throw Error(ErrorKind::Geometry, "the slotted design is not stable: " + d.certificate.reason);
-  if (d.emitted.interlocks > 0 || d.emitted.splitPatches > 0)
-    throw Error(ErrorKind::Geometry,
-                "the design cannot be assembled: " + std::to_string(d.emitted.interlocks) +
-                    " interlocked loop pair(s), " + std::to_string(d.emitted.splitPatches) +
-                    " patch(es) in pieces");
+  const std::vector<std::string> problems = designProblems(d);
+  if (!problems.empty()) {
+    std::string all;
+    for (const std::string& p : problems) all += (all.empty() ? "" : "; ") + p;
+    throw Error(ErrorKind::Geometry, "the design cannot be built: " + all);
+  }
 }
 
 }  // namespace

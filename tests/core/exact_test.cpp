@@ -17,6 +17,7 @@
 #include "exact/patch_faces.hpp"
 #include "geometry/simplify.hpp"
 #include "realization/realize.hpp"
+#include "verify/emitted.hpp"
 #include "support/error.hpp"
 #include "test_support.hpp"
 
@@ -49,9 +50,10 @@ void expectBuildable(const TopoDS_Shape& shape) {
     EXPECT_EQ(f.pieces, 1);
     outlines.push_back(f.outline);
   }
-  const Emitted e = checkEmitted(realizationInput(d.arrangement, d.model.meshDeflection), outlines);
+  const Emitted e = checkEmitted(realizationInput(d.arrangement, d.model.meshDeflection), outlines, SlotParams{});
   EXPECT_EQ(e.interlocks, 0);
   EXPECT_EQ(e.splitPatches, 0);
+  EXPECT_TRUE(e.collisions.empty());
 }
 
 TEST(ExactPatches, HollowSphereIsBuildable) {

@@ -242,13 +242,11 @@ std::vector<PatchFace> exactPatches(const Model& model, const Arrangement& a, co
     const ScaffoldPatch& p = scaffold.patches[k];
     const SliceFrame& frame = p.family == Family::U ? a.u.frame : a.v.frame;
     PatchFace& pf = out[k];
-    pf.exact = exact;
     if (!exact) {
-      pf.outline = simplified(r.slotted[k], kOutlineDeflection);
-      pf.shape = facesFromRegion(pf.outline, frame, p.position);
-      pf.pieces = static_cast<int>(pf.outline.components().size());
+      pf = polygonPatch(a, r, static_cast<int>(k));
       return;
     }
+    pf.exact = true;
     occtGuard("cutting the slots of a patch", [&] {
       gp_Trsf onto;
       onto.SetTranslation(
@@ -266,6 +264,15 @@ std::vector<PatchFace> exactPatches(const Model& model, const Arrangement& a, co
     });
   });
   return out;
+}
+
+PatchFace polygonPatch(const Arrangement& a, const Realization& r, int k) {
+  const ScaffoldPatch& p = a.scaffold.patches[k];
+  PatchFace pf;
+  pf.outline = simplified(r.slotted[k], kOutlineDeflection);
+  pf.shape = facesFromRegion(pf.outline, p.family == Family::U ? a.u.frame : a.v.frame, p.position);
+  pf.pieces = static_cast<int>(pf.outline.components().size());
+  return pf;
 }
 
 TopoDS_Shape kerfCompensated(const TopoDS_Shape& shape, double kerf) {

@@ -103,7 +103,7 @@ std::vector<LabelSpot> partnerSpots(const Design& d, int patch) {
   std::vector<LabelSpot> spots;
   for (size_t h = 0; h < a.scaffold.hinges.size(); ++h) {
     const ScaffoldHinge& hinge = a.scaffold.hinges[h];
-    if ((isU ? hinge.u : hinge.v) != patch || !r.meets[h]) continue;
+    if ((isU ? hinge.u : hinge.v) != patch || !d.emitted.meets[h]) continue;
     const int partner = isU ? hinge.v : hinge.u;
     const Slot slot = isU ? uSlot(r.slots[h]) : vSlot(r.slots[h]);
     const Interval& at = hinge.holds ? hinge.grip : hinge.w;

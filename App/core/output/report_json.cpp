@@ -108,7 +108,7 @@ json reportJson(const Model& model, const DesignParams& params, const Design& d)
   for (size_t h = 0; h < a.scaffold.hinges.size(); ++h) {
     const ScaffoldHinge& hinge = a.scaffold.hinges[h];
     // A hinge whose slotted patches no longer meet along it is not a hinge of the design.
-    if (!r.meets[h]) {
+    if (!d.emitted.meets[h]) {
       ++collapsed;
       continue;
     }
@@ -132,6 +132,14 @@ json reportJson(const Model& model, const DesignParams& params, const Design& d)
                        {"remaining", d.emitted.interlocks},
                        {"cut_throughs", r.interlocks.cutThroughs}};
   doc["split_patches"] = d.emitted.splitPatches;
+  doc["collisions"] = d.emitted.collisions.size();
+  const bool stacked = d.emitted.closest.first >= 0;
+  doc["min_patch_spacing_mm"] = stacked ? json(d.emitted.minPatchSpacing) : json(nullptr);
+  doc["min_finger_mm"] = stacked ? json(d.emitted.minPatchSpacing - params.slots.width()) : json(nullptr);
+  doc["exact_replaced_by_polygons"] = d.exactReplaced;
+  json problems = json::array();
+  for (const std::string& p : designProblems(d)) problems.push_back(p);
+  doc["verdict"] = {{"buildable", problems.empty()}, {"problems", problems}};
   doc["min_slot_edge_distance_mm"] = r.minSlotEdgeDistance;
   doc["min_hinge_length_mm"] = r.shortestHinge;
   doc["quality"] = {{"silhouette_iou_u", a.quality.silhouetteIouU},

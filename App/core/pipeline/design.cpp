@@ -2,6 +2,8 @@
 #include "pipeline/design.hpp"
 
 #include <chrono>
+#include <set>
+#include <sstream>
 
 namespace sliceform {
 namespace {
@@ -31,23 +33,70 @@ Design runDesign(const Model& model, DesignParams params, const Progress& progre
   d.realization = timed(d.timings, "realization", progress, [&] { return realize(input, params.slots); });
   d.patches = timed(d.timings, "exact patches", progress,
                     [&] { return exactPatches(model, d.arrangement, d.realization); });
+  const std::vector<ScaffoldHinge>& hinges = d.arrangement.scaffold.hinges;
   d.emitted = timed(d.timings, "check", progress, [&] {
-    std::vector<Region2d> outlines;
-    for (const PatchFace& p : d.patches) outlines.push_back(p.outline);
-    return checkEmitted(input, outlines);
+    const auto outlines = [&] {
+      std::vector<Region2d> out;
+      for (const PatchFace& p : d.patches) out.push_back(p.outline);
+      return out;
+    };
+    Emitted e = checkEmitted(input, outlines(), params.slots);
+    // An exact face can break what its polygon keeps: material the polygon section lacks
+    // runs into a partner with no slot, or a Boolean leaves the paper cut differently.
+    // Such a patch is emitted as the polygon the search checked.
+    std::set<int> replace;
+    for (const int k : e.failing)
+      if (d.patches[k].exact) replace.insert(k);
+    for (size_t h = 0; h < hinges.size(); ++h)
+      if (hinges[h].holds && d.realization.meets[h] && !e.meets[h])
+        for (const int k : {hinges[h].u, hinges[h].v})
+          if (d.patches[k].exact) replace.insert(k);
+    if (replace.empty()) return e;
+    for (const int k : replace) d.patches[k] = polygonPatch(d.arrangement, d.realization, k);
+    d.exactReplaced = static_cast<int>(replace.size());
+    return checkEmitted(input, outlines(), params.slots);
   });
   d.certificate = timed(d.timings, "certificate again", progress, [&] {
     std::vector<BarPatch> bars;
     for (const ScaffoldPatch& p : d.arrangement.scaffold.patches) bars.push_back({p.family, p.position});
     std::vector<PinHinge> pins;
-    const auto& hinges = d.arrangement.scaffold.hinges;
     for (size_t h = 0; h < hinges.size(); ++h)
-      if (hinges[h].holds && d.realization.meets[h]) pins.push_back({hinges[h].u, hinges[h].v});
+      if (hinges[h].holds && d.emitted.meets[h]) pins.push_back({hinges[h].u, hinges[h].v});
     return certify(bars, pins);
   });
   if (patchesReady) patchesReady(d);
   d.layout = timed(d.timings, "layout", progress, [&] { return layOut(d, params.sheet); });
   return d;
+}
+
+std::vector<std::string> designProblems(const Design& d) {
+  std::vector<std::string> out;
+  const Arrangement& a = d.arrangement;
+  const Emitted& e = d.emitted;
+  const auto id = [&](int k) { return patchId(a.scaffold, k); };
+  if (!a.certificate.stable) out.push_back("the scaffold is not stable: " + a.certificate.reason);
+  if (a.certificate.stable && !d.certificate.stable) {
+    std::ostringstream s;
+    s << "the slotted design is not stable (nullity " << d.certificate.nullity << "): "
+      << d.realization.lostPins << " pair(s) lost every holding hinge to the slots";
+    out.push_back(s.str());
+  }
+  if (e.interlocks > 0) out.push_back(std::to_string(e.interlocks) + " interlocked loop pair(s)");
+  if (e.splitPatches > 0) out.push_back(std::to_string(e.splitPatches) + " patch(es) in pieces");
+  if (!e.collisions.empty()) {
+    std::ostringstream s;
+    s << e.collisions.size() << " U/V pair(s) overlap along their common line with no slot between them (up to "
+      << e.worstOverlap << " mm, e.g. " << id(e.collisions.front().first) << " and "
+      << id(e.collisions.front().second) << ")";
+    out.push_back(s.str());
+  }
+  if (tooClose(e, a.minSpacing)) {
+    std::ostringstream s;
+    s << id(e.closest.first) << " and " << id(e.closest.second) << " are " << e.minPatchSpacing
+      << " mm apart where the spacing rule asks " << a.minSpacing << " mm (try a larger --size)";
+    out.push_back(s.str());
+  }
+  return out;
 }
 
 }  // namespace sliceform

@@ -1,18 +1,22 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // The whole pipeline from a model to a design that can be cut: arrangement (§4),
-// realization (§5), exact patch faces, and a last check of what is emitted: interlocks and
-// split patches on the exact outlines, and the certificate on the hinges that are left; then
+// realization (§5), exact patch faces, and a last check of what is emitted (verify/emitted:
+// real hinges, collisions, interlocks, split patches, spacing; an exact face that breaks a
+// rule its polygon keeps is replaced by the polygon), and the certificate on the hinges
+// that are left; then
 // the layout: patches flattened, labelled and nested onto sheets. Each stage is timed;
 // `progress` hears of each stage as it starts (kDesignStages of them).
 #pragma once
 
 #include <functional>
+#include <string>
 #include <vector>
 
 #include "arrangement/arrange.hpp"
 #include "exact/patch_faces.hpp"
 #include "layout/layout.hpp"
 #include "realization/realize.hpp"
+#include "verify/emitted.hpp"
 
 namespace sliceform {
 
@@ -26,7 +30,8 @@ struct Design {
   Arrangement arrangement;
   Realization realization;
   std::vector<PatchFace> patches;  // exact faces at the popped-up pose
-  Emitted emitted;                 // interlocks and split patches of the emitted outlines
+  Emitted emitted;                 // the fabrication contract, checked on the emitted outlines
+  int exactReplaced = 0;           // exact faces that broke it, emitted as their polygons
   Certificate certificate;         // again, on the hinges whose slotted patches still meet
   SheetLayout layout;              // flat, labelled patches nested onto sheets
   std::vector<StageTime> timings;  // every stage, the arrangement's included
@@ -41,5 +46,9 @@ using PatchesReady = std::function<void(const Design& design)>;
 
 Design runDesign(const Model& model, DesignParams params, const Progress& progress = {},
                  const PatchesReady& patchesReady = {});
+
+// Why the design cannot be built, one clause per broken rule naming what helps; empty when
+// it can. The CLI's exit code and the FreeCAD feature's state both come from it.
+std::vector<std::string> designProblems(const Design& design);
 
 }  // namespace sliceform

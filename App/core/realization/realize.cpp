@@ -447,20 +447,6 @@ std::vector<PatchHinge> patchHinges(const RealizationInput& input, const std::ve
   return out;
 }
 
-Emitted checkEmitted(const RealizationInput& input, const std::vector<Region2d>& outlines) {
-  Emitted e;
-  std::vector<HoleLoops> holes;
-  for (size_t p = 0; p < outlines.size(); ++p) {
-    holes.push_back(holeLoops(outlines[p], input.patches[p].position));
-    e.splitPatches += outlines[p].components().size() == 1 ? 0 : 1;
-  }
-  for (size_t a = 0; a < outlines.size(); ++a)
-    for (size_t b = 0; b < outlines.size(); ++b)
-      if (input.patches[a].family == Family::U && input.patches[b].family == Family::V)
-        e.interlocks += interlockCount(holes[a], input.uFrame, holes[b], input.vFrame);
-  return e;
-}
-
 RealizationInput realizationInput(const Arrangement& a, double tolerance) {
   RealizationInput in;
   in.uFrame = a.u.frame;

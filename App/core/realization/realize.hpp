@@ -67,13 +67,6 @@ struct Realization {
 
 Realization realize(const RealizationInput& input, const SlotParams& params);
 
-// Interlocks and split patches of the outlines actually emitted (the exact faces,
-// polygonised), checked again after the search.
-struct Emitted {
-  int interlocks = 0, splitPatches = 0;
-};
-Emitted checkEmitted(const RealizationInput& input, const std::vector<Region2d>& outlines);
-
 // The hinges of one patch as planSlots sees them, with the given slot choices.
 std::vector<PatchHinge> patchHinges(const RealizationInput& input, const std::vector<SlotPair>& slots,
                                     int patch);

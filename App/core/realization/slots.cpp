@@ -335,10 +335,26 @@ int openedPieceCountFull(const Region2d& region, double neck, double crumb) {
 // leaves 0.3 mm on the polygons, and nothing at all on the exact faces (occ/Ball.brep):
 // the polygons may stray `tolerance` from the true shape. The slotted region's opened
 // pieces are counted against the shape's own, counted once here.
+double slotCrumb(const SlotParams& params) {
+  return std::max(0.5, params.width() * params.width());
+}
+
+double slotNeck(const SlotParams& params, double tolerance) {
+  return std::max(0.1, params.thickness / 2) + tolerance;
+}
+
+int slottedPieces(const Region2d& shape, const Region2d& slotted, const SlotParams& params, double tolerance) {
+  const double crumb = slotCrumb(params), neck = slotNeck(params, tolerance);
+  int kept = 0;
+  for (const Region2d& piece : slotted.components()) kept += piece.area() >= crumb ? 1 : 0;
+  const int opened = openedPieceCount(slotted, neck, crumb) - openedPieceCount(shape, neck, crumb) + 1;
+  return std::max(kept, opened);
+}
+
 SlotCutter::SlotCutter(const Region2d& shape, const SlotParams& params, double tolerance)
     : shape_(shape),
-      crumb_(std::max(0.5, params.width() * params.width())),
-      neck_(std::max(0.1, params.thickness / 2) + tolerance),
+      crumb_(slotCrumb(params)),
+      neck_(slotNeck(params, tolerance)),
       erodedShape_(shape.offset(-neck_)),
       shapePieces_(openedPieceCount(shape, neck_, crumb_)) {}
 

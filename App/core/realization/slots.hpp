@@ -101,6 +101,13 @@ Region2d slotRegion(const std::vector<SlotCut>& cuts, const SlotParams& params);
 int openedPieceCount(const Region2d& region, double neck, double crumb);
 int openedPieceCountFull(const Region2d& region, double neck, double crumb);
 
+// The search's tests for a slotted patch: pieces smaller than `slotCrumb` mm² fall out when
+// cut, and a bridge narrower than 2 `slotNeck` mm counts as cut (see SlotCutter).
+double slotCrumb(const SlotParams& params);
+double slotNeck(const SlotParams& params, double tolerance);
+// Pieces of `slotted` (cut from `shape`) by those tests: what SlotCutter::cut reports.
+int slottedPieces(const Region2d& shape, const Region2d& slotted, const SlotParams& params, double tolerance);
+
 // The slotted patch: shape minus its slots. Crumbs (pieces smaller than a slot-wide square
 // or 0.5 mm², whichever is larger) fall out when cut and are dropped. `pieces` is set to the
 // number of pieces that remain, which must be 1; a bridge narrower than the material
