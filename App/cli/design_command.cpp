@@ -73,6 +73,12 @@ struct DesignOptions : ModelOptions {
 
 void printRealization(const Design& d, const DesignParams& params) {
   const Realization& r = d.realization;
+  std::printf("grazes     %d hinge(s) no slot could cut without splitting a patch; %d patch(es) moved by a slice "
+              "or two; %d left\n",
+              d.grazes.found, d.grazes.moved, d.grazes.remaining);
+  if (d.grazes.splitMoved + d.grazes.splitDropped > 0)
+    std::printf("resplit    %d patch(es) the slot search left split moved, %d taken out\n", d.grazes.splitMoved,
+                d.grazes.splitDropped);
   std::printf("interlocks %d found, %d repaired, %d remaining; %d cut-through(s); %d split patch(es)\n",
               r.interlocks.found, r.interlocks.repaired, d.emitted.interlocks, r.interlocks.cutThroughs,
               d.emitted.splitPatches);

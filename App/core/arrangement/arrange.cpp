@@ -69,8 +69,8 @@ Arrangement arrange(const Model& model, const ArrangementParams& params) {
   a.vCylinders = approximateCylinders(a.reebV, Family::V, a.v.interval, params.tauA, minRun(a.v.interval));
   clock.lap("gca");
 
-  const HingeTable table(a.u, a.v, a.uCylinders, a.vCylinders, params.hinges);
-  a.scaffold = stabilize(a.u, a.v, a.uCylinders, a.vCylinders, table, params.stabilize);
+  a.table = std::make_shared<const HingeTable>(a.u, a.v, a.uCylinders, a.vCylinders, params.hinges);
+  a.scaffold = stabilize(a.u, a.v, a.uCylinders, a.vCylinders, *a.table, params.stabilize);
   clock.lap("frames");
   if (a.scaffold.patches.empty()) {
     throw Error(ErrorKind::BadInput,
@@ -81,17 +81,26 @@ Arrangement arrange(const Model& model, const ArrangementParams& params) {
                     "(try a larger --size, or a smaller --min-hinge-length or --min-slot-edge-distance)");
   }
 
-  std::vector<BarPatch> bars;
-  for (const ScaffoldPatch& p : a.scaffold.patches) bars.push_back({p.family, p.position});
-  std::vector<PinHinge> pins;
-  for (const ScaffoldHinge& h : a.scaffold.hinges)
-    if (h.holds) pins.push_back({h.u, h.v});
-  a.certificate = certify(bars, pins);
+  a.certificate = certifyScaffold(a.scaffold);
   clock.lap("certificate");
 
   a.quality = measureQuality(a.u, a.v, a.uCylinders, a.vCylinders, a.scaffold);
   clock.lap("quality");
   return a;
+}
+
+Certificate certifyScaffold(const Scaffold& s) {
+  std::vector<BarPatch> bars;
+  for (const ScaffoldPatch& p : s.patches) bars.push_back({p.family, p.position});
+  std::vector<PinHinge> pins;
+  for (const ScaffoldHinge& h : s.hinges)
+    if (h.holds) pins.push_back({h.u, h.v});
+  return certify(bars, pins);
+}
+
+void remeasure(Arrangement& a) {
+  a.certificate = certifyScaffold(a.scaffold);
+  a.quality = measureQuality(a.u, a.v, a.uCylinders, a.vCylinders, a.scaffold);
 }
 
 PatchPlane patchPlane(const Arrangement& a, int patch) {

@@ -4,6 +4,7 @@
 // quality) and times each one.
 #pragma once
 
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -33,6 +34,7 @@ struct Arrangement {
   SliceSet u, v;
   ReebGraph reebU, reebV;
   std::vector<Cylinder> uCylinders, vCylinders;
+  std::shared_ptr<const HingeTable> table;  // where patches of any two cylinders hinge
   Scaffold scaffold;
   double minSpacing = 0;  // mm, the spacing rule in force (minPatchSpacing)
   Certificate certificate;
@@ -42,6 +44,11 @@ struct Arrangement {
 
 // Throws BadParameter for directions that are not orthogonal or out-of-range values.
 Arrangement arrange(const Model& model, const ArrangementParams& params);
+
+// The certificate of a scaffold on its holding hinges.
+Certificate certifyScaffold(const Scaffold& scaffold);
+// The certificate and quality again, after patches of the scaffold moved.
+void remeasure(Arrangement& arrangement);
 
 // Where a patch lies in 3D: origin (on the plane), normal and in-plane axes, mm.
 struct PatchPlane {

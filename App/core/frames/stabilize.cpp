@@ -13,6 +13,18 @@
 namespace sliceform {
 namespace {
 
+// Positions are slice centres computed in floating point; a gap of exactly the spacing
+// rule must not fail it by a rounding error.
+constexpr double kSpacingSlack = 1e-6;
+
+// Outer loops only: what a patch covers seen along its normal.
+Region2d filled(const Region2d& r) {
+  ClipperLib::Paths outer;
+  for (const ClipperLib::Path& p : r.paths())
+    if (ClipperLib::Orientation(p)) outer.push_back(p);
+  return Region2d::fromPaths(outer, FillRule::NonZero);
+}
+
 struct Candidate {
   Family family = Family::U;
   int cylinder = 0;
@@ -243,28 +255,15 @@ class Builder {
   mutable std::map<std::tuple<Family, int, int>, bool> stacked_;
   // Positions are slice centres computed in floating point; a gap of exactly minSpacing
   // must not pass by a rounding error.
-  static constexpr double kSpacingSlack = 1e-6;
 
   bool stacked(Family f, int a, int b) const {
     if (a > b) std::swap(a, b);
     const auto key = std::make_tuple(f, a, b);
     const auto it = stacked_.find(key);
     if (it != stacked_.end()) return it->second;
-    const Region2d& ra = cylinders(f)[a].section;
-    const Region2d& rb = cylinders(f)[b].section;
-    const Box2 ba = ra.bounds(), bb = rb.bounds();
-    bool overlap = !ba.empty && !bb.empty && ba.min.x < bb.max.x && bb.min.x < ba.max.x &&
-                   ba.min.y < bb.max.y && bb.min.y < ba.max.y;
-    if (overlap) overlap = !filled(ra).intersect(filled(rb)).empty();
+    const bool overlap = stackedSections(cylinders(f)[a].section, cylinders(f)[b].section);
     stacked_.emplace(key, overlap);
     return overlap;
-  }
-
-  static Region2d filled(const Region2d& r) {
-    ClipperLib::Paths outer;
-    for (const ClipperLib::Path& p : r.paths())
-      if (ClipperLib::Orientation(p)) outer.push_back(p);
-    return Region2d::fromPaths(outer, FillRule::NonZero);
   }
 
   // Two candidates of one family that may both be placed under the spacing rule.
@@ -279,6 +278,39 @@ class Builder {
 };
 
 }  // namespace
+
+bool stackedSections(const Region2d& a, const Region2d& b) {
+  const Box2 ba = a.bounds(), bb = b.bounds();
+  if (ba.empty || bb.empty || ba.min.x >= bb.max.x || bb.min.x >= ba.max.x || ba.min.y >= bb.max.y ||
+      bb.min.y >= ba.max.y)
+    return false;
+  return !filled(a).intersect(filled(b)).empty();
+}
+
+bool movePatch(Scaffold& s, const SliceSet& u, const SliceSet& v, const std::vector<Cylinder>& uCylinders,
+               const std::vector<Cylinder>& vCylinders, const HingeTable& table, double minSpacing, int k,
+               int slice) {
+  ScaffoldPatch& p = s.patches[k];
+  const auto& cylinders = p.family == Family::U ? uCylinders : vCylinders;
+  const Cylinder& c = cylinders[p.cylinder];
+  if (slice < c.firstSlice || slice > c.lastSlice) return false;
+  const double position = (p.family == Family::U ? u : v).slices[slice].position;
+  for (int q = 0; q < static_cast<int>(s.patches.size()); ++q) {
+    const ScaffoldPatch& o = s.patches[q];
+    if (q == k || o.family != p.family) continue;
+    if (o.slice == slice) {
+      if (o.cylinder == p.cylinder) return false;  // that patch is there already
+      continue;                                    // side by side on one slice
+    }
+    if (std::fabs(o.position - position) < minSpacing + kSpacingSlack &&
+        stackedSections(c.section, cylinders[o.cylinder].section))
+      return false;
+  }
+  p.slice = slice;
+  p.position = position;
+  findHinges(s, table);
+  return true;
+}
 
 double minPatchSpacing(const StabilizeOptions& options, const HingeRules& rules) {
   const double least = rules.slotWidth + rules.minSlotEdgeDistance;

@@ -40,4 +40,15 @@ Scaffold stabilize(const SliceSet& u, const SliceSet& v, const std::vector<Cylin
 // Every hinge segment between the scaffold's U- and V-patches, marked holding or not.
 void findHinges(Scaffold& scaffold, const HingeTable& table);
 
+// Whether two sections of one family overlap seen along its normal (holes filled: a patch
+// seen through another's hole still has its slots beside the other's on a partner).
+bool stackedSections(const Region2d& a, const Region2d& b);
+
+// Moves patch k to another slice of its cylinder and finds the hinges again; false, and
+// the scaffold unchanged, when the slice is outside the cylinder, taken, or closer than
+// minSpacing to a stacked patch. Stability is the caller's to check.
+bool movePatch(Scaffold& scaffold, const SliceSet& u, const SliceSet& v, const std::vector<Cylinder>& uCylinders,
+               const std::vector<Cylinder>& vCylinders, const HingeTable& table, double minSpacing, int k,
+               int slice);
+
 }  // namespace sliceform

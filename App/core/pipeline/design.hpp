@@ -15,6 +15,7 @@
 #include "arrangement/arrange.hpp"
 #include "exact/patch_faces.hpp"
 #include "layout/layout.hpp"
+#include "realization/grazes.hpp"
 #include "realization/realize.hpp"
 #include "verify/emitted.hpp"
 
@@ -28,6 +29,7 @@ struct DesignParams {
 
 struct Design {
   Arrangement arrangement;
+  GrazeRepair grazes;              // patches moved off hinges no slot can cut
   Realization realization;
   std::vector<PatchFace> patches;  // exact faces at the popped-up pose
   Emitted emitted;                 // the fabrication contract, checked on the emitted outlines

@@ -22,9 +22,13 @@ constexpr int kMaxCommonHinges = 8;  // 2^8 combinations of one pair's hinges at
 // What the search minimises, in this order.
 struct Score {
   int broken = 0;  // split patches, and pairs whose holding hinges all lost their paper
+  // Pieces beyond one, summed over the split patches: a move that takes a patch from five
+  // pieces to four is progress, though it is still split.
+  int extraPieces = 0;
   int interlocks = 0, cutThroughs = 0;
   bool operator<(const Score& o) const {
-    return std::tie(broken, interlocks, cutThroughs) < std::tie(o.broken, o.interlocks, o.cutThroughs);
+    return std::tie(broken, extraPieces, interlocks, cutThroughs) <
+           std::tie(o.broken, o.extraPieces, o.interlocks, o.cutThroughs);
   }
 };
 
@@ -102,7 +106,11 @@ class Search {
     for (int step = 0; step < maxSteps; ++step) {
       std::pair<int, int> v = nextViolation(given);
       if (v.first < 0) break;
-      if (!improve(v)) given.insert(v);
+      // A move changes what the others' moves can do: what was given up is tried again.
+      if (improve(v))
+        given.clear();
+      else
+        given.insert(v);
     }
   }
 
@@ -116,7 +124,9 @@ class Search {
     }
     const Score s = score();
     r.interlocks = {found_, std::max(0, found_ - s.interlocks), s.interlocks, s.cutThroughs};
-    for (int p = 0; p < n_; ++p) r.splitPatches += state_[p]->pieces > 1 ? 1 : 0;
+    for (int p = 0; p < n_; ++p)
+      if (state_[p]->pieces > 1) r.split.push_back(p);
+    r.splitPatches = static_cast<int>(r.split.size());
     r.meets.assign(meets_.begin(), meets_.end());
     r.lostPins = static_cast<int>(lostPins().size());
     measure(r);
@@ -229,7 +239,10 @@ class Search {
 
   Score score() const {
     Score s;
-    for (int p = 0; p < n_; ++p) s.broken += state_[p]->pieces > 1 ? 1 : 0;
+    for (int p = 0; p < n_; ++p) {
+      s.broken += state_[p]->pieces > 1 ? 1 : 0;
+      s.extraPieces += std::max(0, state_[p]->pieces - 1);
+    }
     s.broken += static_cast<int>(lostPins().size());
     for (const int l : locks_) s.interlocks += l;
     for (const SlotPair x : slots_) s.cutThroughs += isUpDown(x) ? 0 : 1;

@@ -57,6 +57,7 @@ struct Realization {
   std::vector<Region2d> slotted;           // per patch: shape minus slots, crumbs dropped
   InterlockStats interlocks;
   int splitPatches = 0;            // patches in more than one piece (must be 0)
+  std::vector<int> split;          // which they are
   std::vector<bool> meets;         // per hinge: the slotted patches still meet along it
   int lostPins = 0;                // pairs whose every holding hinge stopped meeting
   double minSlotEdgeDistance = 0;  // mm of paper left around slot roots of holding hinges
