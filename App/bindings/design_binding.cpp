@@ -56,6 +56,7 @@ Run readParams(py::dict given) {
   take(d, "min_slot_edge_distance", a.hinges.minSlotEdgeDistance);
   take(d, "max_spacing", a.stabilize.maxSpacing);
   take(d, "min_spacing", a.stabilize.minSpacing);
+  take(d, "time_limit", run.params.timeLimit);
   std::string scheme = "both", slotEnd = "square", uSlots = "up", sheet = "A4";
   take(d, "scheme", scheme);
   if (scheme != "both" && scheme != "u" && scheme != "v")
@@ -272,7 +273,7 @@ void bindDesign(py::module_& m) {
       "Designs a sliceform. `source`: {'brep': BREP string} or {'points': [(x, y, z)], "
       "'triangles': [(i, j, k)]}, with an optional 'name' for messages. `params`: the design "
       "command's options by name (u, v, slices, interval, tau_a, tau_m, scheme, "
-      "min_hinge_length, min_slot_edge_distance, max_spacing, min_spacing, thickness, clearance, kerf, "
+      "min_hinge_length, min_slot_edge_distance, max_spacing, min_spacing, time_limit, thickness, clearance, kerf, "
       "slot_end, u_slots, sheet, margin, spacing, rotate, size, height). `progress(stage)` is "
       "called before each stage; returning False cancels the run (Error 'cancelled').");
 }

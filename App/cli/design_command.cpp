@@ -309,6 +309,9 @@ Run addDesignCommand(CLI::App& app) {
   cmd->add_option("--max-spacing", o->params.arrangement.stabilize.maxSpacing,
                   "mm; add patches in long cylinders so none is farther apart (0: off)")
       ->capture_default_str();
+  cmd->add_option("--time-limit", o->params.timeLimit,
+                  "seconds the design may take before its searches stop with the best found (exit 1); 0: none")
+      ->capture_default_str();
   cmd->add_option("--min-spacing", o->params.arrangement.stabilize.minSpacing,
                   "mm between two patches of one family that overlap seen along their normal, so paper "
                   "is left between their slots (0: slot width + min slot-edge distance)")

@@ -29,6 +29,8 @@ PARAMETERS = (
     ("MinSpacing", "App::PropertyLength", "Hinges", 0.0, "min_spacing",
      "Least distance between two patches of one family that overlap seen along their normal, "
      "so paper is left between their slots; 0 is slot width + MinSlotEdgeDistance"),
+    ("TimeLimit", "App::PropertyFloat", "Slicing", 60.0, "time_limit",
+     "Seconds the design may take before its searches stop with the best found; 0 is no limit"),
     ("Thickness", "App::PropertyLength", "Material", 0.3, "thickness",
      "Material thickness (0.3 mm card, 3 mm plywood)"),
     ("Clearance", "App::PropertyLength", "Material", 0.2, "clearance", "Added to the thickness for the slot width"),

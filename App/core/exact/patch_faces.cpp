@@ -266,10 +266,10 @@ std::vector<PatchFace> exactPatches(const Model& model, const Arrangement& a, co
   return out;
 }
 
-PatchFace polygonPatch(const Arrangement& a, const Realization& r, int k) {
+PatchFace polygonPatch(const Arrangement& a, const Realization& r, int k, bool simplify) {
   const ScaffoldPatch& p = a.scaffold.patches[k];
   PatchFace pf;
-  pf.outline = simplified(r.slotted[k], kOutlineDeflection);
+  pf.outline = simplify ? simplified(r.slotted[k], kOutlineDeflection) : r.slotted[k];
   pf.shape = facesFromRegion(pf.outline, p.family == Family::U ? a.u.frame : a.v.frame, p.position);
   pf.pieces = static_cast<int>(pf.outline.components().size());
   return pf;

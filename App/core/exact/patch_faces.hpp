@@ -30,9 +30,11 @@ struct PatchFace {
 std::vector<PatchFace> exactPatches(const Model& model, const Arrangement& arrangement,
                                     const Realization& realization);
 
-// Patch k as the slotted polygon the search made (within kOutlineDeflection): what a mesh
-// source emits, and what replaces an exact face that breaks a rule the polygon keeps.
-PatchFace polygonPatch(const Arrangement& arrangement, const Realization& realization, int k);
+// Patch k as the slotted polygon the search made, simplified within kOutlineDeflection or
+// not at all: what a mesh source emits, and (unsimplified) what replaces an exact face or a
+// simplified polygon that breaks a rule the search's own polygon keeps.
+PatchFace polygonPatch(const Arrangement& arrangement, const Realization& realization, int k,
+                       bool simplify = true);
 
 // Planar faces of a region on the plane at `position` of `frame`, one per component.
 TopoDS_Shape facesFromRegion(const Region2d& region, const SliceFrame& frame, double position);

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 #include "pipeline/design.hpp"
 
+#include "support/error.hpp"
+
 #include <chrono>
 #include <set>
 #include <sstream>
@@ -24,49 +26,48 @@ Design runDesign(const Model& model, DesignParams params, const Progress& progre
                  const PatchesReady& patchesReady) {
   // Hinges must hold with the slot cut: the paper beside it is measured from its walls.
   checkSlotParams(params.slots);
+  if (!(params.timeLimit >= 0)) throw Error(ErrorKind::BadParameter, "the time limit must be 0 (none) or more seconds");
+  const Deadline deadline(params.timeLimit);
   params.arrangement.hinges.slotWidth = params.slots.width();
   Design d;
+  d.timeLimit = params.timeLimit;
   if (progress) progress("arrangement");
   d.arrangement = arrange(model, params.arrangement);
   d.timings = d.arrangement.timings;
   if (progress) progress("realization");  // grazes and the slot search: one stage to the user
   d.grazes = timed(d.timings, "grazes", {},
-                   [&] { return avoidGrazes(d.arrangement, params.slots, model.meshDeflection); });
+                   [&] { return avoidGrazes(d.arrangement, params.slots, model.meshDeflection, deadline); });
   d.realization = timed(d.timings, "realization", {}, [&] {
-    Realization r = realize(realizationInput(d.arrangement, model.meshDeflection), params.slots);
-    repairSplits(d.arrangement, r, d.grazes, params.slots, model.meshDeflection);
+    Realization r = realize(realizationInput(d.arrangement, model.meshDeflection), params.slots, deadline);
+    repairSplits(d.arrangement, r, d.grazes, params.slots, model.meshDeflection, deadline);
     return r;
   });
   const RealizationInput input = realizationInput(d.arrangement, model.meshDeflection);
   d.patches = timed(d.timings, "exact patches", progress,
                     [&] { return exactPatches(model, d.arrangement, d.realization); });
   const std::vector<ScaffoldHinge>& hinges = d.arrangement.scaffold.hinges;
-  // The emitted outlines are the search's polygons (or the exact faces) within
-  // kOutlineDeflection: a bridge the search kept may be that much thinner on each of its
-  // sides there; the neck test allows for it (cow.obj had one 0.02 mm under).
-  RealizationInput emittedInput = input;
-  emittedInput.tolerance -= 2 * kOutlineDeflection;
   d.emitted = timed(d.timings, "check", progress, [&] {
     const auto outlines = [&] {
       std::vector<Region2d> out;
       for (const PatchFace& p : d.patches) out.push_back(p.outline);
       return out;
     };
-    Emitted e = checkEmitted(emittedInput, outlines(), params.slots);
+    Emitted e = checkEmitted(input, outlines(), params.slots);
     // An exact face can break what its polygon keeps: material the polygon section lacks
-    // runs into a partner with no slot, or a Boolean leaves the paper cut differently.
-    // Such a patch is emitted as the polygon the search checked.
+    // runs into a partner with no slot, or a Boolean leaves the paper cut differently. A
+    // simplified polygon can too: within kOutlineDeflection a bridge the search kept may
+    // open, or a sliver it cut away come back. Such a patch is emitted as the very polygon
+    // the search checked.
     std::set<int> replace;
-    for (const int k : e.failing)
-      if (d.patches[k].exact) replace.insert(k);
+    for (const int k : e.failing) replace.insert(k);
     for (size_t h = 0; h < hinges.size(); ++h)
       if (hinges[h].holds && d.realization.meets[h] && !e.meets[h])
-        for (const int k : {hinges[h].u, hinges[h].v})
-          if (d.patches[k].exact) replace.insert(k);
-    if (replace.empty()) return e;
-    for (const int k : replace) d.patches[k] = polygonPatch(d.arrangement, d.realization, k);
-    d.exactReplaced = static_cast<int>(replace.size());
-    return checkEmitted(emittedInput, outlines(), params.slots);
+        for (const int k : {hinges[h].u, hinges[h].v}) replace.insert(k);
+    for (const int k : replace) {
+      d.exactReplaced += d.patches[k].exact ? 1 : 0;
+      d.patches[k] = polygonPatch(d.arrangement, d.realization, k, false);
+    }
+    return replace.empty() ? e : checkEmitted(input, outlines(), params.slots);
   });
   d.certificate = timed(d.timings, "certificate again", progress, [&] {
     std::vector<BarPatch> bars;
@@ -86,6 +87,12 @@ std::vector<std::string> designProblems(const Design& d) {
   const Arrangement& a = d.arrangement;
   const Emitted& e = d.emitted;
   const auto id = [&](int k) { return patchId(a.scaffold, k); };
+  if (d.realization.timedOut || d.grazes.timedOut) {
+    std::ostringstream s;
+    s << "the time limit (" << d.timeLimit << " s) ran out while " << (d.realization.timedOut ? "searching for slots" : "moving patches off grazes")
+      << "; this is the best design found (try a larger --time-limit, or fewer --slices)";
+    out.push_back(s.str());
+  }
   if (!a.certificate.stable) out.push_back("the scaffold is not stable: " + a.certificate.reason);
   if (a.certificate.stable && !d.certificate.stable) {
     std::ostringstream s;

@@ -25,6 +25,9 @@ struct DesignParams {
   ArrangementParams arrangement;
   SlotParams slots;
   SheetSpec sheet;
+  // Seconds the searches may take in all, from the start of runDesign (0: no limit). A last
+  // resort: past it the design is the best found, and it is not called buildable.
+  double timeLimit = 60;
 };
 
 struct Design {
@@ -33,10 +36,11 @@ struct Design {
   Realization realization;
   std::vector<PatchFace> patches;  // exact faces at the popped-up pose
   Emitted emitted;                 // the fabrication contract, checked on the emitted outlines
-  int exactReplaced = 0;           // exact faces that broke it, emitted as their polygons
+  int exactReplaced = 0;           // exact faces that broke it, emitted as the search's polygons
   Certificate certificate;         // again, on the hinges whose slotted patches still meet
   SheetLayout layout;              // flat, labelled patches nested onto sheets
   std::vector<StageTime> timings;  // every stage, the arrangement's included
+  double timeLimit = 0;            // seconds the searches had (DesignParams::timeLimit)
 };
 
 using Progress = std::function<void(const char* stage)>;

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <memory>
 #include <set>
 #include <tuple>
@@ -17,6 +18,8 @@ namespace {
 // every graze measured on man, bones and the dragon; further moves change the design more
 // than they help.
 constexpr int kGrazeReach = 2;
+// Searches of the whole design repairSplits may run.
+constexpr int kMaxAttempts = 24;
 
 // A hinge by what it joins, to follow it when the scaffold's hinge list is rebuilt.
 using HingeKey = std::tuple<int, int, long long>;
@@ -76,7 +79,7 @@ std::vector<int> grazingHinges(const RealizationInput& in, const SlotParams& par
   return out;
 }
 
-GrazeRepair avoidGrazes(Arrangement& a, const SlotParams& params, double tolerance) {
+GrazeRepair avoidGrazes(Arrangement& a, const SlotParams& params, double tolerance, const Deadline& deadline) {
   GrazeRepair g;
   const auto inputOf = [&](const Scaffold& s) {
     RealizationInput in;
@@ -106,6 +109,10 @@ GrazeRepair avoidGrazes(Arrangement& a, const SlotParams& params, double toleran
     return n;
   };
   while (true) {
+    if (deadline.passed()) {
+      g.timedOut = true;
+      break;
+    }
     auto next = std::find_if(bad.begin(), bad.end(), [&](const HingeKey& k) { return !givenUp.count(k); });
     if (next == bad.end()) break;
     const HingeKey hinge = *next;
@@ -140,16 +147,35 @@ GrazeRepair avoidGrazes(Arrangement& a, const SlotParams& params, double toleran
   return g;
 }
 
-void repairSplits(Arrangement& a, Realization& r, GrazeRepair& g, const SlotParams& params, double tolerance) {
+void repairSplits(Arrangement& a, Realization& r, GrazeRepair& g, const SlotParams& params, double tolerance,
+                  const Deadline& deadline) {
   const auto broken = [](const Realization& x) { return x.splitPatches + x.lostPins; };
   const auto better = [&](const Realization& x) {
     return std::make_pair(broken(x), x.interlocks.remaining) < std::make_pair(broken(r), r.interlocks.remaining);
   };
   // Tries a changed scaffold: kept, with its search, when fewer patches are broken.
-  const auto attempt = [&](Scaffold trial) {
-    if (!certifyScaffold(trial).stable) return false;
+  // Each attempt searches the whole design again; kMaxAttempts bounds the cost where
+  // nothing helps (man.off: 0.3 s a search).
+  int attempts = 0;
+  // `renumber` maps the patch indices of the current scaffold to the trial's (-1: gone).
+  const auto attempt = [&](Scaffold trial, const std::vector<int>& renumber) {
+    if (attempts >= kMaxAttempts || deadline.passed() || !certifyScaffold(trial).stable) return false;
+    ++attempts;
+    // The slots every hinge had that is still there, by what it joins.
+    std::map<HingeKey, SlotPair> had;
+    for (size_t h = 0; h < a.scaffold.hinges.size(); ++h) {
+      ScaffoldHinge moved = a.scaffold.hinges[h];
+      moved.u = renumber[moved.u];
+      moved.v = renumber[moved.v];
+      if (moved.u >= 0 && moved.v >= 0) had[keyOf(moved)] = r.slots[h];
+    }
+    std::vector<SlotPair> start(trial.hinges.size(), params.uUp ? SlotPair::UpDown : SlotPair::DownUp);
+    for (size_t h = 0; h < trial.hinges.size(); ++h) {
+      const auto it = had.find(keyOf(trial.hinges[h]));
+      if (it != had.end()) start[h] = it->second;
+    }
     std::swap(a.scaffold, trial);
-    Realization next = realize(realizationInput(a, tolerance), params);
+    Realization next = realize(realizationInput(a, tolerance), params, deadline, start);
     if (better(next)) {
       r = std::move(next);
       return true;
@@ -157,12 +183,17 @@ void repairSplits(Arrangement& a, Realization& r, GrazeRepair& g, const SlotPara
     std::swap(a.scaffold, trial);
     return false;
   };
+  const auto identity = [&] {
+    std::vector<int> same(a.scaffold.patches.size());
+    for (size_t k = 0; k < same.size(); ++k) same[k] = static_cast<int>(k);
+    return same;
+  };
   const auto move = [&](int k) {
     for (const int delta : {1, -1, 2, -2}) {
       Scaffold trial = a.scaffold;
       if (movePatch(trial, a.u, a.v, a.uCylinders, a.vCylinders, *a.table, a.minSpacing, k,
                     trial.patches[k].slice + delta) &&
-          attempt(std::move(trial)))
+          attempt(std::move(trial), identity()))
         return true;
     }
     return false;
@@ -178,7 +209,9 @@ void repairSplits(Arrangement& a, Realization& r, GrazeRepair& g, const SlotPara
       return p.family == gone.family && p.cylinder == gone.cylinder;
     });
     if (!covered) (gone.family == Family::U ? trial.uncoveredU : trial.uncoveredV).push_back(gone.cylinder);
-    return attempt(std::move(trial));
+    std::vector<int> renumber = identity();
+    for (int& i : renumber) i = i == k ? -1 : i > k ? i - 1 : i;
+    return attempt(std::move(trial), renumber);
   };
   // Each round changes one patch and keeps the change only when it helps, so the count of
   // broken patches falls every round. Order: move a split patch; move the partner across a
@@ -187,6 +220,7 @@ void repairSplits(Arrangement& a, Realization& r, GrazeRepair& g, const SlotPara
   for (int rounds = broken(r); rounds > 0 && broken(r) > 0; --rounds) {
     const std::vector<int> culprits = r.split;
     if (culprits.empty()) break;  // lost pins only: moving a patch is no answer to those
+    // Partners across a graze of a split patch first, then its other partners.
     std::vector<int> partners;
     {
       const RealizationInput in = realizationInput(a, tolerance);
@@ -194,11 +228,14 @@ void repairSplits(Arrangement& a, Realization& r, GrazeRepair& g, const SlotPara
       for (int h = 0; h < static_cast<int>(in.hinges.size()); ++h)
         for (const int k : culprits)
           if (in.hinges[h].u == k || in.hinges[h].v == k) theirs.push_back(h);
-      for (const int h : grazingHinges(in, params, theirs))
+      const auto add = [&](int h) {
         for (const int k : {in.hinges[h].u, in.hinges[h].v})
           if (std::find(culprits.begin(), culprits.end(), k) == culprits.end() &&
               std::find(partners.begin(), partners.end(), k) == partners.end())
             partners.push_back(k);
+      };
+      for (const int h : grazingHinges(in, params, theirs)) add(h);
+      for (const int h : theirs) add(h);
     }
     bool changed = false;
     for (const int k : culprits)
@@ -211,6 +248,7 @@ void repairSplits(Arrangement& a, Realization& r, GrazeRepair& g, const SlotPara
       if (!changed && drop(k)) ++g.splitDropped, changed = true;
     if (!changed) break;
   }
+  g.timedOut = g.timedOut || deadline.passed();
   if (g.splitMoved + g.splitDropped > 0) remeasure(a);
 }
 

@@ -31,17 +31,20 @@ struct GrazeRepair {
   int remaining = 0;  // grazing hinges after
   int splitMoved = 0;    // patches the slot search left split, moved and searched again
   int splitDropped = 0;  // split patches taken out, the scaffold still certified
+  bool timedOut = false;  // the deadline passed while moving patches
 };
 
 // Moves patches off grazes (see above); the arrangement's scaffold, hinges, certificate
 // and quality are brought up to date. `tolerance` as for realizationInput.
-GrazeRepair avoidGrazes(Arrangement& arrangement, const SlotParams& params, double tolerance);
+GrazeRepair avoidGrazes(Arrangement& arrangement, const SlotParams& params, double tolerance,
+                        const Deadline& deadline = {});
 
 // The last resort for patches the slot search leaves split (or pairs that lost every
 // holding hinge): move a split patch by a slice or two, or failing that take it out where
 // the scaffold stays certified without it, and search again; a change is kept when fewer
 // patches are broken. `realization` is replaced by the search on the changed scaffold.
+// Each attempt starts the search from the slots it had (a warm start).
 void repairSplits(Arrangement& arrangement, Realization& realization, GrazeRepair& repair,
-                  const SlotParams& params, double tolerance);
+                  const SlotParams& params, double tolerance, const Deadline& deadline = {});
 
 }  // namespace sliceform

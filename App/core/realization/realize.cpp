@@ -70,8 +70,9 @@ struct PatchState {
 
 class Search {
  public:
-  Search(const RealizationInput& in, const SlotParams& params)
-      : in_(in), params_(params), n_(static_cast<int>(in.patches.size())) {
+  Search(const RealizationInput& in, const SlotParams& params, const Deadline& deadline,
+         const std::vector<SlotPair>& start)
+      : in_(in), params_(params), deadline_(deadline), n_(static_cast<int>(in.patches.size())) {
     hingesOf_.resize(n_);
     hingeIndex_.resize(in.hinges.size());
     for (int h = 0; h < static_cast<int>(in.hinges.size()); ++h) {
@@ -79,7 +80,9 @@ class Search {
       hingesOf_[in.hinges[h].u].push_back(h);
       hingesOf_[in.hinges[h].v].push_back(h);
     }
-    slots_.assign(in.hinges.size(), params.uUp ? SlotPair::UpDown : SlotPair::DownUp);
+    slots_ = start.size() == in.hinges.size()
+                 ? start
+                 : std::vector<SlotPair>(in.hinges.size(), params.uUp ? SlotPair::UpDown : SlotPair::DownUp);
     // Each patch's own tools and first state depend on nothing else: both cores at once.
     cutters_.resize(n_);
     lines_.resize(n_);
@@ -104,6 +107,10 @@ class Search {
     std::set<std::pair<int, int>> given;  // violations no move improves
     const int maxSteps = 4 * static_cast<int>(in_.hinges.size()) + 16;
     for (int step = 0; step < maxSteps; ++step) {
+      if (deadline_.passed()) {
+        timedOut_ = true;
+        break;
+      }
       std::pair<int, int> v = nextViolation(given);
       if (v.first < 0) break;
       // A move changes what the others' moves can do: what was given up is tried again.
@@ -129,6 +136,7 @@ class Search {
     r.splitPatches = static_cast<int>(r.split.size());
     r.meets.assign(meets_.begin(), meets_.end());
     r.lostPins = static_cast<int>(lostPins().size());
+    r.timedOut = timedOut_;
     measure(r);
     order(r);
     return r;
@@ -347,6 +355,7 @@ class Search {
     // States from earlier steps are seldom asked for again; keeping them would only grow.
     cache_.clear();
     for (const std::vector<Move>& tier : tiers(v)) {
+      if (deadline_.passed()) return false;
       prepare(tier);
       const Move* best = nullptr;
       Score bestScore = now;
@@ -425,6 +434,8 @@ class Search {
 
   const RealizationInput& in_;
   SlotParams params_;
+  const Deadline& deadline_;
+  bool timedOut_ = false;
   int n_;
   std::vector<std::vector<int>> hingesOf_;
   std::vector<std::pair<size_t, size_t>> hingeIndex_;  // per hinge: its index in hingesOf_ of u, of v
@@ -473,9 +484,10 @@ RealizationInput realizationInput(const Arrangement& a, double tolerance) {
   return in;
 }
 
-Realization realize(const RealizationInput& input, const SlotParams& params) {
+Realization realize(const RealizationInput& input, const SlotParams& params, const Deadline& deadline,
+                    const std::vector<SlotPair>& start) {
   checkSlotParams(params);
-  Search search(input, params);
+  Search search(input, params, deadline, start);
   search.run();
   return search.result();
 }

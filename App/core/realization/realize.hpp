@@ -23,6 +23,7 @@
 #include "frames/scaffold.hpp"
 #include "realization/slots.hpp"
 #include "slicing/slice_set.hpp"
+#include "support/deadline.hpp"
 
 namespace sliceform {
 
@@ -64,9 +65,14 @@ struct Realization {
   double shortestHinge = 0;        // mm, over holding hinges
   std::vector<int> assemblyOrder;  // patch indices
   bool assemblyChecked = false;    // each patch added is free of the ones placed
+  bool timedOut = false;           // the deadline passed before the search ended
 };
 
-Realization realize(const RealizationInput& input, const SlotParams& params);
+// `start`: a slot pair per hinge to begin from (a warm start after a patch moved), or empty
+// for every U-patch slotted as params.uUp says. The search stops when `deadline` passes,
+// with the best slots it has (Realization::timedOut).
+Realization realize(const RealizationInput& input, const SlotParams& params, const Deadline& deadline = {},
+                    const std::vector<SlotPair>& start = {});
 
 // The hinges of one patch as planSlots sees them, with the given slot choices.
 std::vector<PatchHinge> patchHinges(const RealizationInput& input, const std::vector<SlotPair>& slots,

@@ -112,13 +112,20 @@ int slottedPieces(const Region2d& shape, const Region2d& slotted, const SlotPara
 // or 0.5 mm², whichever is larger) fall out when cut and are dropped. `pieces` is set to the
 // number of pieces that remain, which must be 1; a bridge narrower than the material
 // thickness (at least 0.2 mm) plus twice `tolerance` (how far the polygons may stray from
-// the true shape) counts as cut, unless the shape had it before the slots.
+// the true shape) counts as cut, unless the shape had it before the slots. Slivers (pieces
+// of under kSliverCrumbs crumbs that only such a bridge holds) are cut away with it.
 class SlotCutter {
  public:
   SlotCutter(const Region2d& shape, const SlotParams& params, double tolerance);
   Region2d cut(const Region2d& slots, int* pieces) const;
 
+  // Opened pieces smaller than this many crumbs, once slots are cut, are slivers (cut()).
+  static constexpr double kSliverCrumbs = 4;
+
  private:
+  // Pieces of `out` (shape less `slots`, `kept` pieces of at least a crumb) by the neck test.
+  int countPieces(const Region2d& out, const Region2d& slots, int kept) const;
+
   Region2d shape_;
   double crumb_, neck_;
   Region2d erodedShape_;  // shape_ eroded by neck_
