@@ -87,7 +87,8 @@ GrazeRepair avoidGrazes(Arrangement& a, const SlotParams& params, double toleran
     in.vFrame = a.v.frame;
     for (const ScaffoldPatch& p : s.patches)
       in.patches.push_back(
-          {p.family, p.position, (p.family == Family::U ? a.uCylinders : a.vCylinders)[p.cylinder].section});
+          {p.family, p.position, (p.family == Family::U ? a.uCylinders : a.vCylinders)[p.cylinder].section,
+           p.cylinder});
     in.hinges = s.hinges;
     in.tolerance = tolerance;
     return in;
@@ -157,6 +158,7 @@ void repairSplits(Arrangement& a, Realization& r, GrazeRepair& g, const SlotPara
   // Each attempt searches the whole design again; kMaxAttempts bounds the cost where
   // nothing helps (man.off: 0.3 s a search).
   int attempts = 0;
+  const std::shared_ptr<RealizeMemo> memo = makeRealizeMemo();
   // `renumber` maps the patch indices of the current scaffold to the trial's (-1: gone).
   const auto attempt = [&](Scaffold trial, const std::vector<int>& renumber) {
     if (attempts >= kMaxAttempts || deadline.passed() || !certifyScaffold(trial).stable) return false;
@@ -175,7 +177,7 @@ void repairSplits(Arrangement& a, Realization& r, GrazeRepair& g, const SlotPara
       if (it != had.end()) start[h] = it->second;
     }
     std::swap(a.scaffold, trial);
-    Realization next = realize(realizationInput(a, tolerance), params, deadline, start);
+    Realization next = realize(realizationInput(a, tolerance), params, deadline, start, memo.get());
     if (better(next)) {
       r = std::move(next);
       return true;

@@ -68,11 +68,29 @@ struct PatchState {
   std::vector<std::vector<double>> onHinge;
 };
 
+// A patch state by all it depends on: family, cylinder, position, and its hinges as
+// planSlots sees them (line, segment, root, slot).
+using MemoKey = std::tuple<int, int, double, std::vector<std::tuple<double, double, double, double, int>>>;
+
+}  // namespace
+
+class RealizeMemo {
+ public:
+  std::map<std::pair<int, int>, std::shared_ptr<const SlotCutter>> cutters;  // (family, cylinder)
+  std::map<MemoKey, std::shared_ptr<const PatchState>> states;
+};
+
+std::shared_ptr<RealizeMemo> makeRealizeMemo() {
+  return std::make_shared<RealizeMemo>();
+}
+
+namespace {
+
 class Search {
  public:
   Search(const RealizationInput& in, const SlotParams& params, const Deadline& deadline,
-         const std::vector<SlotPair>& start)
-      : in_(in), params_(params), deadline_(deadline), n_(static_cast<int>(in.patches.size())) {
+         const std::vector<SlotPair>& start, RealizeMemo* memo)
+      : in_(in), params_(params), deadline_(deadline), memo_(memo), n_(static_cast<int>(in.patches.size())) {
     hingesOf_.resize(n_);
     hingeIndex_.resize(in.hinges.size());
     for (int h = 0; h < static_cast<int>(in.hinges.size()); ++h) {
@@ -86,16 +104,23 @@ class Search {
     // Each patch's own tools and first state depend on nothing else: both cores at once.
     cutters_.resize(n_);
     lines_.resize(n_);
+    for (int p = 0; p < n_; ++p) cutters_[p] = memoCutter(p);
     parallelFor(static_cast<size_t>(n_), [&](size_t p) {
       const Region2d& shape = in.patches[p].shape;
-      cutters_[p] = std::make_unique<SlotCutter>(shape, params, in.tolerance);
+      if (!cutters_[p]) cutters_[p] = std::make_shared<SlotCutter>(shape, params, in.tolerance);
       lines_[p] = std::make_unique<VerticalLines>(
           shape, VerticalLines::slotLines(patchHinges(in_, slots_, static_cast<int>(p)), params));
     });
+    if (memo_)
+      for (int p = 0; p < n_; ++p)
+        if (in.patches[p].cylinder >= 0) memo_->cutters.emplace(cutterKey(p), cutters_[p]);
     locks_.assign(static_cast<size_t>(n_) * n_, 0);
     state_.resize(n_);
-    parallelFor(static_cast<size_t>(n_),
-                [&](size_t p) { state_[p] = evaluatePatch(static_cast<int>(p), slots_); });
+    std::vector<int> all(n_);
+    for (int p = 0; p < n_; ++p) all[p] = p;
+    const std::vector<std::shared_ptr<const PatchState>> first =
+        evaluatePatches(all, std::vector<std::vector<SlotPair>>(1, slots_), true);
+    for (int p = 0; p < n_; ++p) state_[p] = first[p];
     for (int p = 0; p < n_; ++p)
       if (in.patches[p].family == Family::U) refreshLocks(p);
     meets_.resize(in.hinges.size());
@@ -166,6 +191,52 @@ class Search {
     return st;
   }
 
+  std::pair<int, int> cutterKey(int p) const {
+    return {in_.patches[p].family == Family::U ? 0 : 1, in_.patches[p].cylinder};
+  }
+  std::shared_ptr<const SlotCutter> memoCutter(int p) const {
+    if (!memo_ || in_.patches[p].cylinder < 0) return nullptr;
+    const auto it = memo_->cutters.find(cutterKey(p));
+    return it == memo_->cutters.end() ? nullptr : it->second;
+  }
+  MemoKey memoKey(int p, const std::vector<SlotPair>& slots) const {
+    const PatchShape& ps = in_.patches[p];
+    MemoKey key{ps.family == Family::U ? 0 : 1, ps.cylinder, ps.position, {}};
+    for (const PatchHinge& h : patchHinges(in_, slots, p))
+      std::get<3>(key).emplace_back(h.x, h.w.lo, h.w.hi, h.root, static_cast<int>(h.slot));
+    return key;
+  }
+
+  // evaluatePatch for patches[i] with slots[i] (or slots[0] for all when `same`), both
+  // cores at once, through the memo when there is one.
+  std::vector<std::shared_ptr<const PatchState>> evaluatePatches(const std::vector<int>& patches,
+                                                                  const std::vector<std::vector<SlotPair>>& slots,
+                                                                  bool same) {
+    const auto slotsFor = [&](size_t i) -> const std::vector<SlotPair>& { return same ? slots[0] : slots[i]; };
+    std::vector<std::shared_ptr<const PatchState>> out(patches.size());
+    std::vector<MemoKey> keys(patches.size());
+    std::vector<size_t> missing;
+    for (size_t i = 0; i < patches.size(); ++i) {
+      if (memo_ && in_.patches[patches[i]].cylinder >= 0) {
+        keys[i] = memoKey(patches[i], slotsFor(i));
+        const auto it = memo_->states.find(keys[i]);
+        if (it != memo_->states.end()) {
+          out[i] = it->second;
+          continue;
+        }
+      }
+      missing.push_back(i);
+    }
+    parallelFor(missing.size(), [&](size_t m) {
+      const size_t i = missing[m];
+      out[i] = evaluatePatch(patches[i], slotsFor(i));
+    });
+    if (memo_)
+      for (const size_t i : missing)
+        if (in_.patches[patches[i]].cylinder >= 0) memo_->states.emplace(std::move(keys[i]), out[i]);
+    return out;
+  }
+
   // What patch p's state depends on: the slot p gets at each of its hinges.
   using PatchKey = std::pair<int, std::vector<Slot>>;
   PatchKey patchKey(int p, const std::vector<SlotPair>& slots) const {
@@ -194,8 +265,9 @@ class Search {
         }
       for (const auto& [h, pair] : m) slots[h] = slots_[h];
     }
-    std::vector<std::shared_ptr<const PatchState>> states(keys.size());
-    parallelFor(keys.size(), [&](size_t i) { states[i] = evaluatePatch(keys[i].first, slotsOf[i]); });
+    std::vector<int> patches;
+    for (const PatchKey& key : keys) patches.push_back(key.first);
+    std::vector<std::shared_ptr<const PatchState>> states = evaluatePatches(patches, slotsOf, false);
     for (size_t i = 0; i < keys.size(); ++i) cache_.emplace(std::move(keys[i]), std::move(states[i]));
   }
 
@@ -204,7 +276,7 @@ class Search {
     PatchKey key = patchKey(p, slots_);
     const auto it = cache_.find(key);
     if (it != cache_.end()) return it->second;
-    auto st = evaluatePatch(p, slots_);
+    auto st = evaluatePatches({p}, {slots_}, true).front();
     cache_.emplace(std::move(key), st);
     return st;
   }
@@ -435,13 +507,14 @@ class Search {
   const RealizationInput& in_;
   SlotParams params_;
   const Deadline& deadline_;
+  RealizeMemo* memo_;
   bool timedOut_ = false;
   int n_;
   std::vector<std::vector<int>> hingesOf_;
   std::vector<std::pair<size_t, size_t>> hingeIndex_;  // per hinge: its index in hingesOf_ of u, of v
   std::vector<SlotPair> slots_;
   std::vector<std::unique_ptr<VerticalLines>> lines_;            // per patch: its shape on its hinge lines
-  std::vector<std::unique_ptr<SlotCutter>> cutters_;             // per patch
+  std::vector<std::shared_ptr<const SlotCutter>> cutters_;       // per patch
   std::vector<std::shared_ptr<const PatchState>> state_;         // per patch, for slots_
   std::map<PatchKey, std::shared_ptr<const PatchState>> cache_;  // states the current step computed
   std::vector<int> locks_;  // interlocked hole pairs, [U-patch * n + V-patch]
@@ -477,7 +550,7 @@ RealizationInput realizationInput(const Arrangement& a, double tolerance) {
   in.vFrame = a.v.frame;
   for (const ScaffoldPatch& p : a.scaffold.patches) {
     const std::vector<Cylinder>& cylinders = p.family == Family::U ? a.uCylinders : a.vCylinders;
-    in.patches.push_back({p.family, p.position, cylinders[p.cylinder].section});
+    in.patches.push_back({p.family, p.position, cylinders[p.cylinder].section, p.cylinder});
   }
   in.hinges = a.scaffold.hinges;
   in.tolerance = tolerance;
@@ -485,9 +558,9 @@ RealizationInput realizationInput(const Arrangement& a, double tolerance) {
 }
 
 Realization realize(const RealizationInput& input, const SlotParams& params, const Deadline& deadline,
-                    const std::vector<SlotPair>& start) {
+                    const std::vector<SlotPair>& start, RealizeMemo* memo) {
   checkSlotParams(params);
-  Search search(input, params, deadline, start);
+  Search search(input, params, deadline, start, memo);
   search.run();
   return search.result();
 }

@@ -18,6 +18,7 @@
 // would take a pin from the certificate.
 #pragma once
 
+#include <memory>
 #include <vector>
 
 #include "frames/scaffold.hpp"
@@ -33,6 +34,7 @@ struct PatchShape {
   Family family = Family::U;
   double position = 0;  // along the family's normal, mm
   Region2d shape;       // in the family's frame, before slots
+  int cylinder = -1;    // whose section `shape` is, for RealizeMemo (-1: not known)
 };
 
 struct RealizationInput {
@@ -68,11 +70,18 @@ struct Realization {
   bool timedOut = false;           // the deadline passed before the search ended
 };
 
+// What searches of one design share when it is searched again after a patch moved: each
+// cylinder's slot cutter, and each patch state by everything it depends on (cylinder,
+// position, and its hinges with their slots), so only the moved patch and its partners are
+// slotted anew. Only for the same slot parameters and tolerance.
+class RealizeMemo;
+std::shared_ptr<RealizeMemo> makeRealizeMemo();
+
 // `start`: a slot pair per hinge to begin from (a warm start after a patch moved), or empty
 // for every U-patch slotted as params.uUp says. The search stops when `deadline` passes,
 // with the best slots it has (Realization::timedOut).
 Realization realize(const RealizationInput& input, const SlotParams& params, const Deadline& deadline = {},
-                    const std::vector<SlotPair>& start = {});
+                    const std::vector<SlotPair>& start = {}, RealizeMemo* memo = nullptr);
 
 // The hinges of one patch as planSlots sees them, with the given slot choices.
 std::vector<PatchHinge> patchHinges(const RealizationInput& input, const std::vector<SlotPair>& slots,

@@ -364,28 +364,26 @@ Region2d SlotCutter::cut(const Region2d& slots, int* pieces) const {
     if (piece.area() >= crumb_) kept.push_back(std::move(piece));
   const Region2d out = kept.size() == 1 ? kept.front() : Region2d::uniteAll(kept);
   if (!pieces) return out;
-  *pieces = countPieces(out, slots, static_cast<int>(kept.size()));
-  if (*pieces == 1) return out;
+  std::vector<Region2d> slivers;
+  *pieces = countPieces(out, slots, static_cast<int>(kept.size()), &slivers);
   // Slivers: a strip of paper between a slot and the outline, thinner than the neck where
   // it joins the rest, tears off like a crumb falls out. Cut away with their thread, and
   // kept so when that leaves fewer pieces (rocker-arm: 0.6 mm² beside a slot leaving
   // the paper 0.3 mm from its edge).
-  std::vector<Region2d> slivers;
-  for (Region2d& piece : out.offset(-neck_).offset(neck_).components())
-    if (piece.area() < kSliverCrumbs * crumb_) slivers.push_back(std::move(piece));
-  if (slivers.empty()) return out;
+  if (*pieces == 1 || slivers.empty()) return out;
   const Region2d cleared = slots.unite(Region2d::uniteAll(slivers).offset(neck_));
   std::vector<Region2d> trimmedKept;
   for (Region2d& piece : shape_.subtractComponents(cleared))
     if (piece.area() >= crumb_) trimmedKept.push_back(std::move(piece));
   const Region2d trimmed = trimmedKept.size() == 1 ? trimmedKept.front() : Region2d::uniteAll(trimmedKept);
-  const int trimmedPieces = countPieces(trimmed, cleared, static_cast<int>(trimmedKept.size()));
+  const int trimmedPieces = countPieces(trimmed, cleared, static_cast<int>(trimmedKept.size()), nullptr);
   if (trimmedPieces >= *pieces) return out;
   *pieces = trimmedPieces;
   return trimmed;
 }
 
-int SlotCutter::countPieces(const Region2d& out, const Region2d& slots, int kept) const {
+int SlotCutter::countPieces(const Region2d& out, const Region2d& slots, int kept,
+                            std::vector<Region2d>* slivers) const {
   // The slotted shape eroded is the shape eroded less the slots grown by the same amount
   // (a disc fits the paper left when it fits the shape and misses every slot), and the
   // shape is eroded once: one Boolean instead of eroding the whole outline again. The two
@@ -400,8 +398,24 @@ int SlotCutter::countPieces(const Region2d& out, const Region2d& slots, int kept
   forEachComponent(tree, [&](const ClipperLib::Paths& paths) {
     if (paths.front().size() >= 3) parts.push_back(makePart(paths));
   });
+  const double sliver = kSliverCrumbs * crumb_;
   int opened = countApartParts(parts, neck_, crumb_);
-  if (opened < 0) opened = openedPieceCountFull(out, neck_, crumb_);
+  if (opened >= 0 && slivers) {
+    // Each eroded part is one opened piece: only the small ones need growing back.
+    for (const Part& part : parts) {
+      if (part.area >= sliver) continue;
+      Region2d grown = Region2d::fromPaths(part.paths, FillRule::NonZero).offset(neck_);
+      if (grown.area() >= crumb_ && grown.area() < sliver) slivers->push_back(std::move(grown));
+    }
+  } else if (opened < 0) {
+    opened = 0;
+    for (Region2d& piece : out.offset(-neck_).offset(neck_).components()) {
+      const double area = piece.area();
+      if (area < crumb_) continue;
+      ++opened;
+      if (slivers && area < sliver) slivers->push_back(std::move(piece));
+    }
+  }
   return std::max(kept, opened - shapePieces_ + 1);
 }
 

@@ -123,8 +123,9 @@ class SlotCutter {
   static constexpr double kSliverCrumbs = 4;
 
  private:
-  // Pieces of `out` (shape less `slots`, `kept` pieces of at least a crumb) by the neck test.
-  int countPieces(const Region2d& out, const Region2d& slots, int kept) const;
+  // Pieces of `out` (shape less `slots`, `kept` pieces of at least a crumb) by the neck test;
+  // the opened pieces smaller than kSliverCrumbs crumbs go to `slivers` when it is given.
+  int countPieces(const Region2d& out, const Region2d& slots, int kept, std::vector<Region2d>* slivers) const;
 
   Region2d shape_;
   double crumb_, neck_;
