@@ -74,8 +74,8 @@ struct DesignOptions : ModelOptions {
 void printRealization(const Design& d, const DesignParams& params) {
   const Realization& r = d.realization;
   std::printf("grazes     %d hinge(s) no slot could cut without splitting a patch; %d patch(es) moved by a slice "
-              "or two; %d left\n",
-              d.grazes.found, d.grazes.moved, d.grazes.remaining);
+              "or two, %d taken out; %d left\n",
+              d.grazes.found, d.grazes.moved, d.grazes.dropped, d.grazes.remaining);
   if (d.grazes.splitMoved + d.grazes.splitDropped > 0)
     std::printf("resplit    %d patch(es) the slot search left split moved, %d taken out\n", d.grazes.splitMoved,
                 d.grazes.splitDropped);

@@ -203,7 +203,9 @@ TEST(ExactPatches, KerfMovesCutPathsAwayFromThePaper) {
 }
 
 // Folded almost flat, the patches still touch only at hinge points: every U/V pair of faces
-// meets in isolated points, never along a line.
+// meets in isolated points, never along a line (but the 2 kRootGap on the hinge line where
+// an up slot and a down slot start past their common root: the hinge line stays the
+// patches' common line at every fold angle).
 TEST(Fold, FoldedTorusHasNoCollisions) {
   const Design d = design(modelFromShape(test::makeTorus(60, 20), "torus"));
   for (double theta : {90.0, 12.0}) {
@@ -222,7 +224,8 @@ TEST(Fold, FoldedTorusHasNoCollisions) {
         if (d.arrangement.scaffold.patches[b].family != Family::V || boxes[a].IsOut(boxes[b])) continue;
         BRepAlgoAPI_Section section(placed[a], placed[b]);
         ASSERT_TRUE(section.IsDone());
-        EXPECT_LT(length(section.Shape()), 1e-6) << "theta " << theta << " patches " << a << ", " << b;
+        EXPECT_LT(length(section.Shape()), 2 * kRootGap + 1e-6)
+            << "theta " << theta << " patches " << a << ", " << b;
         ++pairs;
       }
     }

@@ -177,11 +177,14 @@ TEST(Slots, WidthIsThicknessPlusClearance) {
   EXPECT_NEAR(down[0].hi - down[0].lo, 3.15, 1e-4);
   EXPECT_NEAR((down[0].lo + down[0].hi) / 2, xv, 1e-4);
   EXPECT_TRUE(gaps(r.slotted[1], 30).empty());
-  // The slots meet at the root, in the middle of the hinge.
+  // The slots meet at the root, in the middle of the hinge, each kRootGap past it.
   EXPECT_NEAR(r.slotted[0].bounds().max.y, 40, 1e-6);
   const std::vector<Interval> uOnLine = r.slotted[0].intervalsOnLine({xu, 0}, {0, 1});
   ASSERT_EQ(uOnLine.size(), 1u);
-  EXPECT_NEAR(uOnLine[0].hi, 20, 1e-4);
+  EXPECT_NEAR(uOnLine[0].hi, 20 + kRootGap, 1e-5);
+  const std::vector<Interval> vOnLine = r.slotted[1].intervalsOnLine({xv, 0}, {0, 1});
+  ASSERT_EQ(vOnLine.size(), 1u);
+  EXPECT_NEAR(vOnLine[0].lo, 20 - kRootGap, 1e-5);
   EXPECT_EQ(r.splitPatches, 0);
 }
 
@@ -193,7 +196,7 @@ TEST(Slots, RoundEndsStayWithinTheSlot) {
   const Realization a = realize(in, square), b = realize(in, round);
   const double xu = lineX(in.uFrame, in.vFrame, 5);
   // The rounded slot reaches the root on its centre line, and leaves the corners.
-  EXPECT_NEAR(b.slotted[0].intervalsOnLine({xu, 0}, {0, 1})[0].hi, 20, 1e-3);
+  EXPECT_NEAR(b.slotted[0].intervalsOnLine({xu, 0}, {0, 1})[0].hi, 20 + kRootGap, 1e-3);
   EXPECT_GT(b.slotted[0].area(), a.slotted[0].area());
   EXPECT_LT(b.slotted[0].area() - a.slotted[0].area(), round.width() * round.width());
 }

@@ -312,6 +312,16 @@ bool movePatch(Scaffold& s, const SliceSet& u, const SliceSet& v, const std::vec
   return true;
 }
 
+void dropPatch(Scaffold& s, const HingeTable& table, int k) {
+  const ScaffoldPatch gone = s.patches[k];
+  s.patches.erase(s.patches.begin() + k);
+  const bool covered = std::any_of(s.patches.begin(), s.patches.end(), [&](const ScaffoldPatch& p) {
+    return p.family == gone.family && p.cylinder == gone.cylinder;
+  });
+  if (!covered) (gone.family == Family::U ? s.uncoveredU : s.uncoveredV).push_back(gone.cylinder);
+  findHinges(s, table);
+}
+
 double minPatchSpacing(const StabilizeOptions& options, const HingeRules& rules) {
   const double least = rules.slotWidth + rules.minSlotEdgeDistance;
   if (options.minSpacing == 0) return least;

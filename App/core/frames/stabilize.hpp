@@ -44,6 +44,10 @@ void findHinges(Scaffold& scaffold, const HingeTable& table);
 // seen through another's hole still has its slots beside the other's on a partner).
 bool stackedSections(const Region2d& a, const Region2d& b);
 
+// Takes patch k out and finds the hinges again; its cylinder is listed as uncovered when no
+// other patch covers it. Patches after k move down by one. Stability is the caller's.
+void dropPatch(Scaffold& scaffold, const HingeTable& table, int k);
+
 // Moves patch k to another slice of its cylinder and finds the hinges again; false, and
 // the scaffold unchanged, when the slice is outside the cylinder, taken, or closer than
 // minSpacing to a stacked patch. Stability is the caller's to check.

@@ -141,10 +141,39 @@ GrazeRepair avoidGrazes(Arrangement& a, const SlotParams& params, double toleran
       }
       if (moved) break;
     }
+    if (moved) continue;
+    // No slice near works: take out the smaller of the two patches where the scaffold
+    // stays certified without it (the slot search could only fail on it, at length, and
+    // the split repair would take it out after).
+    std::vector<int> which{std::get<0>(hinge), std::get<1>(hinge)};
+    const auto areaOf = [&](int k) {
+      const ScaffoldPatch& p = a.scaffold.patches[k];
+      return (p.family == Family::U ? a.uCylinders : a.vCylinders)[p.cylinder].section.area();
+    };
+    if (areaOf(which[1]) < areaOf(which[0])) std::swap(which[0], which[1]);
+    for (const int k : which) {
+      Scaffold trial = a.scaffold;
+      dropPatch(trial, *a.table, k);
+      if (!certifyScaffold(trial).stable) continue;
+      a.scaffold = std::move(trial);
+      const auto renumber = [&](const std::set<HingeKey>& keys) {
+        std::set<HingeKey> out;
+        for (auto [u, v, w] : keys) {
+          if (u == k || v == k) continue;
+          out.insert({u > k ? u - 1 : u, v > k ? v - 1 : v, w});
+        }
+        return out;
+      };
+      bad = renumber(bad);
+      givenUp = renumber(givenUp);
+      ++g.dropped;
+      moved = true;
+      break;
+    }
     if (!moved) givenUp.insert(hinge);
   }
   g.remaining = static_cast<int>(bad.size());
-  if (g.moved > 0) remeasure(a);
+  if (g.moved + g.dropped > 0) remeasure(a);
   return g;
 }
 
@@ -202,15 +231,7 @@ void repairSplits(Arrangement& a, Realization& r, GrazeRepair& g, const SlotPara
   };
   const auto drop = [&](int k) {
     Scaffold trial = a.scaffold;
-    const ScaffoldPatch gone = trial.patches[k];
-    trial.patches.erase(trial.patches.begin() + k);
-    findHinges(trial, *a.table);
-    trial.uncoveredU = a.scaffold.uncoveredU;
-    trial.uncoveredV = a.scaffold.uncoveredV;
-    const bool covered = std::any_of(trial.patches.begin(), trial.patches.end(), [&](const ScaffoldPatch& p) {
-      return p.family == gone.family && p.cylinder == gone.cylinder;
-    });
-    if (!covered) (gone.family == Family::U ? trial.uncoveredU : trial.uncoveredV).push_back(gone.cylinder);
+    dropPatch(trial, *a.table, k);
     std::vector<int> renumber = identity();
     for (int& i : renumber) i = i == k ? -1 : i > k ? i - 1 : i;
     return attempt(std::move(trial), renumber);

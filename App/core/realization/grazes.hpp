@@ -11,7 +11,8 @@
 // nothing else, by the search's own piece count (SlotCutter). A hinge is grazing when
 // every pair splits a patch. Then a patch of the hinge is moved within its cylinder by
 // up to kGrazeReach slices, where the spacing rule allows it and the scaffold stays
-// certified, to the first slice where none of its hinges graze.
+// certified, to the first slice where none of its hinges graze. Where none does, the
+// smaller patch of the two is taken out if the scaffold stays certified without it.
 #pragma once
 
 #include <vector>
@@ -28,6 +29,7 @@ std::vector<int> grazingHinges(const RealizationInput& input, const SlotParams& 
 struct GrazeRepair {
   int found = 0;      // grazing hinges before
   int moved = 0;      // patches moved
+  int dropped = 0;    // patches taken out where no move helped
   int remaining = 0;  // grazing hinges after
   int splitMoved = 0;    // patches the slot search left split, moved and searched again
   int splitDropped = 0;  // split patches taken out, the scaffold still certified

@@ -129,7 +129,10 @@ class Search {
 
   void run() {
     found_ = score().interlocks;
-    std::set<std::pair<int, int>> given;  // violations no move improves
+    // Violations no move improves, with the version of their neighbourhood then: one is
+    // tried again once a move changed a patch its moves touch (a move changes what other
+    // moves can do), and not before (the Menger sponge: 180 patch states a try).
+    Given given;
     const int maxSteps = 4 * static_cast<int>(in_.hinges.size()) + 16;
     for (int step = 0; step < maxSteps; ++step) {
       if (deadline_.passed()) {
@@ -138,11 +141,7 @@ class Search {
       }
       std::pair<int, int> v = nextViolation(given);
       if (v.first < 0) break;
-      // A move changes what the others' moves can do: what was given up is tried again.
-      if (improve(v))
-        given.clear();
-      else
-        given.insert(v);
+      if (!improve(v)) given[v] = neighbourhoodVersion(v);
     }
   }
 
@@ -329,15 +328,33 @@ class Search {
     return s;
   }
 
+  using Given = std::map<std::pair<int, int>, long>;
+
+  // How often the patches a violation's moves touch (its patches and their partners) have
+  // changed in accepted moves.
+  long neighbourhoodVersion(std::pair<int, int> v) const {
+    long sum = 0;
+    for (const int p : {v.first, v.second}) {
+      if (p < 0) continue;
+      sum += version_[p];
+      for (const int h : hingesOf_[p]) sum += version_[in_.hinges[h].u == p ? in_.hinges[h].v : in_.hinges[h].u];
+    }
+    return sum;
+  }
+  bool givenUp(const Given& given, std::pair<int, int> v) const {
+    const auto it = given.find(v);
+    return it != given.end() && it->second == neighbourhoodVersion(v);
+  }
+
   // A split patch (p, -1), or an interlocked pair (U-patch, V-patch); (-1, -1) when none.
-  std::pair<int, int> nextViolation(const std::set<std::pair<int, int>>& given) const {
+  std::pair<int, int> nextViolation(const Given& given) const {
     for (int p = 0; p < n_; ++p)
-      if (state_[p]->pieces > 1 && !given.count({p, -1})) return {p, -1};
+      if (state_[p]->pieces > 1 && !givenUp(given, {p, -1})) return {p, -1};
     for (const auto& pair : lostPins())
-      if (!given.count(pair)) return pair;
+      if (!givenUp(given, pair)) return pair;
     for (int a = 0; a < n_; ++a)
       for (int b = 0; b < n_; ++b)
-        if (lockAt(a, b) > 0 && !given.count({a, b})) return {a, b};
+        if (lockAt(a, b) > 0 && !givenUp(given, {a, b})) return {a, b};
     return {-1, -1};
   }
 
@@ -438,6 +455,7 @@ class Search {
       }
       if (best) {
         apply(*best);
+        for (const auto& saved : savedPatches_) ++version_[saved.patch];
         return true;
       }
     }
@@ -523,6 +541,7 @@ class Search {
   std::vector<SavedPatch> savedPatches_;
   std::vector<int> savedLocks_;
   std::vector<char> meets_, savedMeets_;  // per hinge: meets(h), kept up to date by apply()
+  std::vector<long> version_ = std::vector<long>(n_, 0);  // per patch: accepted moves that changed it
 };
 
 }  // namespace

@@ -2,6 +2,7 @@
 #include "realization/slots.hpp"
 
 #include <algorithm>
+#include <functional>
 #include <cmath>
 #include <limits>
 #include <map>
@@ -221,10 +222,10 @@ std::vector<SlotCut> planSlots(const VerticalLines& shape, const std::vector<Pat
     }
     SlotCut cut{h.x, {h.root, h.root}, false, false};
     if (h.slot == Slot::Up) {
-      cut.y.hi = rootAbove;
+      cut.y.hi = closedAbove ? rootAbove + kRootGap : rootAbove;
       cut.openHi = !closedAbove;
     } else if (h.slot == Slot::Down) {
-      cut.y.lo = rootBelow;
+      cut.y.lo = closedBelow ? rootBelow - kRootGap : rootBelow;
       cut.openLo = !closedBelow;
     } else {
       cut.y = {below, above};
@@ -233,6 +234,14 @@ std::vector<SlotCut> planSlots(const VerticalLines& shape, const std::vector<Pat
     }
     if (cut.openHi) cut.y.hi = openEnd(shape, h.x, halfWidth, cut.y.hi, +1);
     if (cut.openLo) cut.y.lo = openEnd(shape, h.x, halfWidth, cut.y.lo, -1);
+    // An up or down slot starts kRootGap past its root: the partner's slot ends on the
+    // root too, and two slot ends on one point make the interlock test read that point as
+    // inside the other's hole or not by rounding alone (the independent checker read 5
+    // interlocks on a Menger sponge that has none). The two papers overlap by 2 µm there,
+    // which paper of any thickness does. An end bound by a neighbour's root goes kRootGap
+    // past it, so it still meets the patch's own slot there, which starts past that root.
+    if (h.slot == Slot::Up) cut.y.lo += kRootGap;
+    if (h.slot == Slot::Down) cut.y.hi -= kRootGap;
     if (cut.y.hi > cut.y.lo) cuts.push_back(cut);
   }
   return cuts;
@@ -287,30 +296,56 @@ Part makePart(const ClipperLib::Paths& paths) {
   return part;
 }
 
-// Growing the eroded region back (round corners at every vertex, then a union) is most of
-// the search's time, and it is rarely needed. A connected eroded piece grows into one
-// connected piece that contains it, and two eroded pieces more than 2 neck apart (plus a
-// margin for rounding to Clipper units) cannot meet when grown. So when every two eroded
-// pieces are that far apart, each eroded piece is one piece of the opened region: it counts
-// when it is at least a crumb already, and otherwise when it is once grown back alone (a
-// small piece, cheap to grow). Returns -1 when two pieces come closer: then the whole
-// region must be grown back.
-int countApartParts(const std::vector<Part>& parts, double neck, double crumb) {
+// Growing the eroded region back (round corners at every vertex, then a union) was most
+// of the search's time, and it is seldom needed. Each eroded part grows into one connected
+// piece, and two parts' growths (by neck) meet exactly when the parts come within 2 neck
+// of each other. So the opened region's pieces are the clusters of parts linked by that
+// distance (plus a margin for rounding to Clipper units: a bridge within a micron of the
+// neck may count either way), found without growing anything. Only a cluster small enough
+// to be a crumb, or a sliver, is grown back, to measure it. (Growing the whole region back
+// whenever two parts came close cost every move on a patch with a natural neck, such as
+// the Menger sponge's, two offsets of the whole patch.) Opened pieces smaller than `small`
+// go to `smallPieces` when it is given.
+int countOpenedParts(const std::vector<Part>& parts, double neck, double crumb, double small,
+                     std::vector<Region2d>* smallPieces) {
   const double gap = 2 * neck + 1e-3;
+  std::vector<size_t> cluster(parts.size());
+  for (size_t i = 0; i < parts.size(); ++i) cluster[i] = i;
+  const std::function<size_t(size_t)> root = [&](size_t i) {
+    return cluster[i] == i ? i : cluster[i] = root(cluster[i]);
+  };
   std::vector<std::vector<Segment>> edges(parts.size());
   for (size_t i = 0; i < parts.size(); ++i)
     for (size_t j = i + 1; j < parts.size(); ++j) {
-      if (apart(parts[i].box, parts[j].box, gap)) continue;
+      if (root(i) == root(j) || apart(parts[i].box, parts[j].box, gap)) continue;
       for (const size_t k : {i, j})
         if (edges[k].empty()) edges[k] = segments(parts[k].paths);
-      if (!fartherThan(edges[i], parts[i].box, edges[j], parts[j].box, gap)) return -1;
+      if (!fartherThan(edges[i], parts[i].box, edges[j], parts[j].box, gap)) cluster[root(j)] = root(i);
     }
+  std::vector<std::vector<size_t>> members(parts.size());
+  for (size_t i = 0; i < parts.size(); ++i) members[root(i)].push_back(i);
   int n = 0;
-  for (const Part& part : parts) {
-    // Clear of crumb-sized pieces by far, or grown back alone (normalised as components()
-    // would, so a piece near the crumb size is measured as before).
-    const bool big = part.area >= 2 * crumb;
-    n += big || Region2d::fromPaths(part.paths, FillRule::NonZero).offset(neck).area() >= crumb ? 1 : 0;
+  const auto piece = [&](Region2d grown) {
+    const double area = grown.area();
+    if (area < crumb) return;
+    ++n;
+    if (smallPieces && area < small) smallPieces->push_back(std::move(grown));
+  };
+  for (const std::vector<size_t>& group : members) {
+    if (group.empty()) continue;
+    double area = 0;
+    for (const size_t i : group) area += parts[i].area;
+    // Clear of crumb-sized and small pieces by far: counted without growing (else grown
+    // back and normalised as components() would, so a piece near the crumb size is
+    // measured as before).
+    if (area >= std::max(2 * crumb, small)) {
+      ++n;
+      continue;
+    }
+    ClipperLib::Paths together;
+    for (const size_t i : group) together.insert(together.end(), parts[i].paths.begin(), parts[i].paths.end());
+    Region2d grown = Region2d::fromPaths(together, FillRule::NonZero).offset(neck);
+    piece(std::move(grown));
   }
   return n;
 }
@@ -320,8 +355,7 @@ int countApartParts(const std::vector<Part>& parts, double neck, double crumb) {
 int openedPieceCount(const Region2d& region, double neck, double crumb) {
   std::vector<Part> parts;
   for (const Region2d& part : region.offset(-neck).components()) parts.push_back(makePart(part.paths()));
-  const int n = countApartParts(parts, neck, crumb);
-  return n >= 0 ? n : openedPieceCountFull(region, neck, crumb);
+  return countOpenedParts(parts, neck, crumb, 0, nullptr);
 }
 
 int openedPieceCountFull(const Region2d& region, double neck, double crumb) {
@@ -365,7 +399,7 @@ Region2d SlotCutter::cut(const Region2d& slots, int* pieces) const {
   const Region2d out = kept.size() == 1 ? kept.front() : Region2d::uniteAll(kept);
   if (!pieces) return out;
   std::vector<Region2d> slivers;
-  *pieces = countPieces(out, slots, static_cast<int>(kept.size()), &slivers);
+  *pieces = countPieces(slots, static_cast<int>(kept.size()), &slivers);
   // Slivers: a strip of paper between a slot and the outline, thinner than the neck where
   // it joins the rest, tears off like a crumb falls out. Cut away with their thread, and
   // kept so when that leaves fewer pieces (rocker-arm: 0.6 mm² beside a slot leaving
@@ -376,19 +410,18 @@ Region2d SlotCutter::cut(const Region2d& slots, int* pieces) const {
   for (Region2d& piece : shape_.subtractComponents(cleared))
     if (piece.area() >= crumb_) trimmedKept.push_back(std::move(piece));
   const Region2d trimmed = trimmedKept.size() == 1 ? trimmedKept.front() : Region2d::uniteAll(trimmedKept);
-  const int trimmedPieces = countPieces(trimmed, cleared, static_cast<int>(trimmedKept.size()), nullptr);
+  const int trimmedPieces = countPieces(cleared, static_cast<int>(trimmedKept.size()), nullptr);
   if (trimmedPieces >= *pieces) return out;
   *pieces = trimmedPieces;
   return trimmed;
 }
 
-int SlotCutter::countPieces(const Region2d& out, const Region2d& slots, int kept,
-                            std::vector<Region2d>* slivers) const {
+int SlotCutter::countPieces(const Region2d& slots, int kept, std::vector<Region2d>* slivers) const {
   // The slotted shape eroded is the shape eroded less the slots grown by the same amount
   // (a disc fits the paper left when it fits the shape and misses every slot), and the
   // shape is eroded once: one Boolean instead of eroding the whole outline again. The two
   // differ only in how round corners are cut into chords (1 µm), so the count could differ
-  // from eroding `out` only on a bridge within microns of the neck.
+  // from eroding the slotted shape only on a bridge within microns of the neck.
   ClipperLib::Clipper clipper;
   clipper.AddPaths(erodedShape_.paths(), ClipperLib::ptSubject, true);
   clipper.AddPaths(slots.offset(neck_).paths(), ClipperLib::ptClip, true);
@@ -398,24 +431,7 @@ int SlotCutter::countPieces(const Region2d& out, const Region2d& slots, int kept
   forEachComponent(tree, [&](const ClipperLib::Paths& paths) {
     if (paths.front().size() >= 3) parts.push_back(makePart(paths));
   });
-  const double sliver = kSliverCrumbs * crumb_;
-  int opened = countApartParts(parts, neck_, crumb_);
-  if (opened >= 0 && slivers) {
-    // Each eroded part is one opened piece: only the small ones need growing back.
-    for (const Part& part : parts) {
-      if (part.area >= sliver) continue;
-      Region2d grown = Region2d::fromPaths(part.paths, FillRule::NonZero).offset(neck_);
-      if (grown.area() >= crumb_ && grown.area() < sliver) slivers->push_back(std::move(grown));
-    }
-  } else if (opened < 0) {
-    opened = 0;
-    for (Region2d& piece : out.offset(-neck_).offset(neck_).components()) {
-      const double area = piece.area();
-      if (area < crumb_) continue;
-      ++opened;
-      if (slivers && area < sliver) slivers->push_back(std::move(piece));
-    }
-  }
+  const int opened = countOpenedParts(parts, neck_, crumb_, kSliverCrumbs * crumb_, slivers);
   return std::max(kept, opened - shapePieces_ + 1);
 }
 

@@ -74,6 +74,11 @@ class VerticalLines {
   std::map<double, std::vector<Interval>> lines_;
 };
 
+// How far an up or down slot starts past its root, mm: the partner's slot ends there too,
+// and two slot ends on one point leave the interlock parity to rounding (planSlots). The
+// two papers overlap by twice this at the root.
+constexpr double kRootGap = 1e-3;
+
 // The strips to cut for the hinges of one patch (one per hinge that is not `none`).
 std::vector<SlotCut> planSlots(const Region2d& shape, const std::vector<PatchHinge>& hinges,
                                const SlotParams& params);
@@ -96,8 +101,9 @@ SlotShapes slotShapes(const std::vector<SlotCut>& cuts, const SlotParams& params
 Region2d slotRegion(const std::vector<SlotCut>& cuts, const SlotParams& params);
 
 // Pieces of at least `crumb` mm² left when the region is opened by `neck` mm (eroded, then
-// grown back): a bridge narrower than 2 neck is cut. openedPieceCountFull always grows the
-// region back; openedPieceCount skips that when the eroded pieces decide the count alone.
+// grown back): a bridge narrower than 2 neck is cut. openedPieceCountFull grows the whole
+// region back; openedPieceCount only the eroded pieces that come close to another (the same
+// count, as the tests check).
 int openedPieceCount(const Region2d& region, double neck, double crumb);
 int openedPieceCountFull(const Region2d& region, double neck, double crumb);
 
@@ -123,9 +129,9 @@ class SlotCutter {
   static constexpr double kSliverCrumbs = 4;
 
  private:
-  // Pieces of `out` (shape less `slots`, `kept` pieces of at least a crumb) by the neck test;
+  // Pieces of the shape less `slots` (`kept` of them at least a crumb) by the neck test;
   // the opened pieces smaller than kSliverCrumbs crumbs go to `slivers` when it is given.
-  int countPieces(const Region2d& out, const Region2d& slots, int kept, std::vector<Region2d>* slivers) const;
+  int countPieces(const Region2d& slots, int kept, std::vector<Region2d>* slivers) const;
 
   Region2d shape_;
   double crumb_, neck_;
