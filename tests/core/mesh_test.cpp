@@ -99,6 +99,9 @@ TEST(Mesh, NonManifoldAndDegenerateTriangles) {
   EXPECT_EQ(topo.boundaryEdges, 0u);
   EXPECT_EQ(topo.degenerateTriangles, 1u);
   EXPECT_NE(topo.describe().find("non-manifold"), std::string::npos) << topo.describe();
+  // One of them is named, to be found in the model.
+  ASSERT_EQ(topo.sampleNonManifoldEdges.size(), 3u);
+  EXPECT_NE(topo.describe().find("for example the edge (0, 0, 0)-("), std::string::npos) << topo.describe();
 }
 
 TEST(Mesh, WeldExactMergesTriangleSoup) {
