@@ -195,6 +195,9 @@ void runDesign(DesignOptions o) {
   if (model.holesFilled > 0)
     std::printf("repaired   %zu small hole(s) of the mesh filled (fans about their centres)\n",
                 model.holesFilled);
+  if (model.edgesSplit > 0)
+    std::printf("repaired   %zu edge(s) where closed parts of the mesh touch split apart\n",
+                model.edgesSplit);
   std::printf("slices     %zu U, %zu V at %.3f / %.3f mm\n", a.u.slices.size(), a.v.slices.size(),
               a.u.interval, a.v.interval);
   std::printf("reeb       %zu U edges, %zu V edges\n", a.reebU.edges.size(), a.reebV.edges.size());

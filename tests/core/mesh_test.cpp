@@ -3,15 +3,18 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <set>
 
 #include "model/mesh.hpp"
 #include "model/model.hpp"
+#include "slicing/mesh_slicer.hpp"
 #include "support/error.hpp"
 #include "test_support.hpp"
 
 namespace sliceform {
 namespace {
 
+using test::boxMesh;
 using test::cubeMesh;
 
 TEST(Mesh, ClosedCubeIsClosed) {
@@ -99,6 +102,121 @@ TEST(Mesh, NonManifoldAndDegenerateTriangles) {
   EXPECT_EQ(topo.boundaryEdges, 0u);
   EXPECT_EQ(topo.degenerateTriangles, 1u);
   EXPECT_NE(topo.describe().find("non-manifold"), std::string::npos) << topo.describe();
+  // One of them is named, to be found in the model.
+  ASSERT_EQ(topo.sampleNonManifoldEdges.size(), 3u);
+  EXPECT_NE(topo.describe().find("for example the edge (0, 0, 0)-("), std::string::npos) << topo.describe();
+}
+
+// The meshes side by side in one mesh, not welded.
+Mesh together(const std::vector<Mesh>& parts) {
+  Mesh all;
+  for (const Mesh& part : parts) {
+    const auto base = static_cast<uint32_t>(all.vertices.size());
+    all.vertices.insert(all.vertices.end(), part.vertices.begin(), part.vertices.end());
+    for (const auto& t : part.triangles) all.triangles.push_back({base + t[0], base + t[1], base + t[2]});
+  }
+  return all;
+}
+
+// Points of the triangles [first, last) of `mesh`, by id.
+std::set<uint32_t> pointsOf(const Mesh& mesh, size_t first, size_t last) {
+  std::set<uint32_t> ids;
+  for (size_t t = first; t < last; ++t) ids.insert(mesh.triangles[t].begin(), mesh.triangles[t].end());
+  return ids;
+}
+
+TEST(Mesh, PartsTouchingAlongAnEdgeAreSplitApart) {
+  // Two unit cubes that share only the edge x = y = 1. Welded, that edge has four
+  // triangles and its ends belong to both cubes: the mesh was refused as non-manifold.
+  const Mesh cubes = together({boxMesh({0, 0, 0}, {1, 1, 1}), boxMesh({1, 1, 0}, {1, 1, 1})});
+  const MeshTopology welded = analyseTopology(weldExact(cubes));
+  EXPECT_EQ(welded.nonManifoldEdges, 1u);
+  EXPECT_NE(welded.describe().find("for example the edge (1, 1, 0)-(1, 1, 1)"), std::string::npos)
+      << welded.describe();
+  const Model m = modelFromMesh(cubes, "two cubes");
+  EXPECT_EQ(m.edgesSplit, 1u);
+  EXPECT_NO_THROW(requireClosed(m));
+  EXPECT_EQ(m.mesh.vertices.size(), 16u);  // the edge's two ends, once for each cube
+  // Each cube is closed on its own: no point is shared between them.
+  ASSERT_EQ(m.mesh.triangles.size(), 24u);
+  const std::set<uint32_t> first = pointsOf(m.mesh, 0, 12), second = pointsOf(m.mesh, 12, 24);
+  for (uint32_t v : first) EXPECT_EQ(second.count(v), 0u) << v;
+  // A plane across the edge: two squares, each a loop of its own cube, both turning the same way.
+  MeshSliceStats stats;
+  const SliceSet set = sliceMesh(m.mesh, makeSliceFrame({0, 0, 1}), {0.25, 0.5}, &stats);
+  EXPECT_EQ(stats.loops, 4u);
+  EXPECT_EQ(stats.inconsistentLoops, 0u);
+  for (const Slice& s : set.slices) EXPECT_NEAR(s.region.area(), 2, 1e-9);
+  // A part turned inside out is a closed part too: its sections wind the other way, and
+  // are filled all the same.
+  Mesh inside = boxMesh({1, 1, 0}, {1, 1, 1});
+  for (auto& t : inside.triangles) std::swap(t[1], t[2]);
+  const Model flipped = modelFromMesh(together({boxMesh({0, 0, 0}, {1, 1, 1}), inside}), "flipped");
+  EXPECT_EQ(flipped.edgesSplit, 1u);
+  EXPECT_NO_THROW(requireClosed(flipped));
+  EXPECT_NEAR(sliceMesh(flipped.mesh, makeSliceFrame({0, 0, 1}), {0.5}).slices[0].region.area(), 2, 1e-9);
+}
+
+TEST(Mesh, OverlappingPartsOnAnEdgeAreSplitByTheirFans) {
+  // A unit cube, and a unit cube turned 135 degrees about its edge x = y = 1 so that it
+  // reaches into the first (as two parts of cgal/diplodocus.off do where welding joined them).
+  // Going round the edge the triangles do not alternate in direction; about each end, each
+  // cube's fan leads from one of its triangles on the edge to the other.
+  Mesh turned = boxMesh({0, 0, 0}, {1, 1, 1});
+  const double h = std::sqrt(0.5);
+  for (Vec3& p : turned.vertices) p = {1 - h * p.x + h * p.y, 1 - h * p.x - h * p.y, p.z};
+  const Model m = modelFromMesh(together({boxMesh({0, 0, 0}, {1, 1, 1}), turned}), "overlapping cubes");
+  EXPECT_EQ(m.edgesSplit, 1u);
+  EXPECT_NO_THROW(requireClosed(m));
+  EXPECT_EQ(m.mesh.vertices.size(), 16u);
+  // The sections are the union of the two squares, which overlap by sqrt(2) - 1.
+  MeshSliceStats stats;
+  const SliceSet set = sliceMesh(m.mesh, makeSliceFrame({0, 0, 1}), {0.5}, &stats);
+  EXPECT_EQ(stats.inconsistentLoops, 0u);
+  EXPECT_NEAR(set.slices[0].region.area(), 3 - std::sqrt(2.0), 1e-6);
+}
+
+TEST(Mesh, PartsFaceToFaceAboutOneEdgeAreSplitApart) {
+  // Three unit cubes about the edge x = y = 1, two of them face to face with the third:
+  // the coincident faces, turned opposite ways, lie at the same angle about the edge.
+  const Mesh cubes =
+      together({boxMesh({0, 0, 0}, {1, 1, 1}), boxMesh({1, 1, 0}, {1, 1, 1}), boxMesh({0, 1, 0}, {1, 1, 1})});
+  const Model m = modelFromMesh(cubes, "three cubes");
+  EXPECT_NO_THROW(requireClosed(m)) << analyseTopology(m.mesh).describe();
+  for (size_t a = 0; a < 3; ++a) {
+    const std::set<uint32_t> mine = pointsOf(m.mesh, 12 * a, 12 * a + 12);
+    EXPECT_EQ(mine.size(), 8u);
+    for (size_t b = a + 1; b < 3; ++b)
+      for (uint32_t v : pointsOf(m.mesh, 12 * b, 12 * b + 12)) EXPECT_EQ(mine.count(v), 0u) << a << b;
+  }
+  MeshSliceStats stats;
+  const SliceSet set = sliceMesh(m.mesh, makeSliceFrame({0, 0, 1}), {0.5}, &stats);
+  EXPECT_EQ(stats.inconsistentLoops, 0u);
+  EXPECT_NEAR(set.slices[0].region.area(), 3, 1e-9);
+}
+
+TEST(Mesh, EdgesThatCannotBeSplitAreNamed) {
+  // A fin on a cube's edge (three triangles there), and two cubes touching along an edge
+  // with one triangle there flipped (three of the four run one way along it).
+  Mesh fin = boxMesh({0, 0, 0}, {1, 1, 1});
+  fin.vertices.push_back({2, 2, 0.5});
+  fin.triangles.push_back({3, 7, 8});  // on the edge (1, 1, 0)-(1, 1, 1)
+  Mesh oneFlipped = boxMesh({1, 1, 0}, {1, 1, 1});
+  std::swap(oneFlipped.triangles[5][1], oneFlipped.triangles[5][2]);  // (0, 5, 4): on the edge
+  const Mesh flipped = together({boxMesh({0, 0, 0}, {1, 1, 1}), oneFlipped});
+  for (const Mesh& mesh : {fin, flipped}) {
+    const Model m = modelFromMesh(mesh, "touching");
+    EXPECT_EQ(m.edgesSplit, 0u);
+    try {
+      requireClosed(m);
+      ADD_FAILURE() << "no error";
+    } catch (const Error& e) {
+      const std::string text = e.what();
+      EXPECT_NE(text.find("1 non-manifold edge"), std::string::npos) << text;
+      EXPECT_NE(text.find("for example the edge (1, 1, 0)-(1, 1, 1)"), std::string::npos) << text;
+      EXPECT_NE(text.find("could not be"), std::string::npos) << text;
+    }
+  }
 }
 
 TEST(Mesh, WeldExactMergesTriangleSoup) {

@@ -167,6 +167,61 @@ TEST(Model, ReadsOffQuadAsTwoTriangles) {
   }
 }
 
+// The unit corner tetrahedron of ReadsOffTetrahedron, read whatever the OFF variant.
+void expectCornerTetra(const std::string& path) {
+  const Mesh raw = readOff(path);
+  ASSERT_EQ(raw.vertices.size(), 4u);
+  ASSERT_EQ(raw.triangles.size(), 4u);
+  EXPECT_EQ(raw.vertices[1], (Vec3{1, 0, 0}));
+  EXPECT_EQ(raw.vertices[3], (Vec3{0, 0, 1}));
+  EXPECT_EQ(raw.triangles[3], (std::array<uint32_t, 3>{1, 2, 3}));
+  EXPECT_NO_THROW(requireClosed(readModel(path)));
+}
+
+TEST(Model, ReadsEveryOffVariant) {
+  // Vertex columns come in the order position, normal, colour, texture; faces may end in
+  // a colour of 0 to 4 numbers (a colormap index, RGB or RGBA, integers or fractions).
+  test::TempDir dir;
+  const struct {
+    const char* name;
+    std::string content;
+  } cases[] = {
+      {"coff.off",
+       "COFF\n4 4 6\n0 0 0 255 0 0 255\n1 0 0 0 255 0 255\n0 1 0 0 0 255 255\n0 0 1 128 128 128 255\n"
+       "3 0 2 1 255 0 0\n3 0 1 3 0.5 0.5 0.5 1\n3 0 3 2 7\n3 1 2 3\n"},
+      {"coff_rgb.off",
+       "COFF 4 4 0\n0 0 0 1 0 0\n1 0 0 0 1 0\n0 1 0 0 0 1\n0 0 1 1 1 1\n"
+       "3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n"},
+      {"noff.off",
+       "NOFF\n4 4 6\n0 0 0 -0.577 -0.577 -0.577\n1 0 0 1 0 0\n0 1 0 0 1 0\n0 0 1 0 0 1\n"
+       "3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n"},
+      {"cnoff.off",
+       "CNOFF\n4 4 6\n0 0 0 -1 0 0 0.1 0.2 0.3 1\n1 0 0 1 0 0 0.1 0.2 0.3 1\n0 1 0 0 1 0 0.1 0.2 0.3 1\n"
+       "0 0 1 0 0 1 0.1 0.2 0.3 1\n3 0 2 1 0 0 255\n3 0 1 3\n3 0 3 2\n3 1 2 3\n"},
+      {"stoff.off",
+       "STOFF\n4 4 6\n0 0 0 0 0\n1 0 0 1 0\n0 1 0 0 1\n0 0 1 1 1\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n"},
+      {"stcnoff.off",
+       "STCNOFF 4 4 6\n0 0 0 0 0 -1 1 1 1 1 0 0\n1 0 0 1 0 0 1 1 1 1 1 0\n0 1 0 0 1 0 1 1 1 1 0 1\n"
+       "0 0 1 0 0 1 1 1 1 1 1 1\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n"},
+      // Geomview makes the keyword optional.
+      {"no_keyword.off", "4 4 6\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n"},
+  };
+  for (const auto& c : cases) {
+    SCOPED_TRACE(c.name);
+    expectCornerTetra(dir.write(c.name, c.content));
+  }
+}
+
+TEST(Model, OffCommentsAndBlankLinesAnywhere) {
+  test::TempDir dir;
+  expectCornerTetra(dir.write("comments.off",
+                              "# written by hand\n\nCOFF# the keyword, a comment straight after it\n"
+                              "\n  # counts next\n\t4 4 6 # edges are not checked\n\n"
+                              "0 0 0 # origin\r\n# between vertices\n1 0 0\n\n0 1 0 255 255 255\n0 0 1\n"
+                              "\n# faces\n3 0 2 1 # no colour\n3 0 1 3 255 0 0 # a colour\n\n"
+                              "3 0 3 2\n3 1 2 3\n# the end\n\n"));
+}
+
 TEST(Model, BadOffFilesAreBadInput) {
   test::TempDir dir;
   const std::string vertices = "0 0 0\n1 0 0\n0 1 0\n0 0 1\n";
@@ -185,6 +240,15 @@ TEST(Model, BadOffFilesAreBadInput) {
       {"counts.off", "OFF\nfour faces\n", "cannot read the vertex and face counts"},
       {"huge.off", "OFF\n-4 1 0\n", "implausible counts"},
       {"comments.off", "# nothing but a comment\n", "empty"},
+      // Line numbers count every line, comments and blank lines too.
+      {"line.off", "OFF\n# c\n\n4 1 0\n" + vertices + "3 0 9 2\n", "line 9: face 1 uses vertex 9"},
+      {"vertex_line.off", "COFF\n4 1 0\n0 0 0\n1 0\n", "line 4: vertex 2 is not three numbers"},
+      {"colour.off", "OFF\n4 1 0\n" + vertices + "3 0 1 2 1 1 1 1 1\n", "line 7: face 1 has 5 numbers after"},
+      {"colour_word.off", "OFF\n4 1 0\n" + vertices + "3 0 1 2 red\n", "line 7: face 1 ends in \"red\""},
+      {"4off.off", "4OFF\n4 1 0\n", "line 1: 4OFF"},
+      {"noff_dim.off", "nOFF\n3\n4 1 0\n", "line 1: nOFF"},
+      {"binary.off", "OFF BINARY\n", "binary OFF"},
+      {"keyword.off", "OFFICE\n4 1 0\n", "not an OFF file"},
   };
   for (const auto& c : cases) {
     SCOPED_TRACE(c.name);

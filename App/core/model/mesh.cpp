@@ -27,6 +27,14 @@ struct Vec3Hash {
   }
 };
 
+// "(x, y, z)-(x, y, z)", to name an edge to the user.
+std::string edgeText(const std::array<Vec3, 2>& e) {
+  std::ostringstream out;
+  out << "(" << e[0].x << ", " << e[0].y << ", " << e[0].z << ")-(" << e[1].x << ", " << e[1].y << ", "
+      << e[1].z << ")";
+  return out.str();
+}
+
 }  // namespace
 
 Box3 Mesh::bounds() const {
@@ -50,16 +58,16 @@ std::string MeshTopology::describe() const {
   if (boundaryEdges > 0) {
     out << "the mesh is not closed: " << boundaryEdges << " boundary edge" << (boundaryEdges == 1 ? "" : "s")
         << " in " << holes << " hole" << (holes == 1 ? "" : "s");
-    const auto& e = sampleBoundaryEdges;
-    if (!e.empty()) {
-      out << " (for example the edge (" << e[0][0].x << ", " << e[0][0].y << ", " << e[0][0].z << ")-("
-          << e[0][1].x << ", " << e[0][1].y << ", " << e[0][1].z << "))";
-    }
+    if (!sampleBoundaryEdges.empty())
+      out << " (for example the edge " << edgeText(sampleBoundaryEdges[0]) << ")";
   }
   if (nonManifoldEdges > 0) {
     if (boundaryEdges > 0) out << "; ";
     out << nonManifoldEdges << " non-manifold edge" << (nonManifoldEdges == 1 ? "" : "s")
-        << " (shared by three or more triangles)";
+        << " (shared by three or more triangles";
+    if (!sampleNonManifoldEdges.empty())
+      out << ", for example the edge " << edgeText(sampleNonManifoldEdges[0]);
+    out << ")";
   }
   return out.str();
 }
@@ -92,6 +100,9 @@ MeshTopology analyseTopology(const Mesh& mesh) {
         topo.sampleBoundaryEdges.push_back({mesh.vertices[a], mesh.vertices[b]});
     } else if (uses > 2) {
       ++topo.nonManifoldEdges;
+      const auto a = static_cast<uint32_t>(edges[i] >> 32), b = static_cast<uint32_t>(edges[i]);
+      if (topo.sampleNonManifoldEdges.size() < 3)
+        topo.sampleNonManifoldEdges.push_back({mesh.vertices[a], mesh.vertices[b]});
     }
     i = j;
   }

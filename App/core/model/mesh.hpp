@@ -29,6 +29,7 @@ struct MeshTopology {
   size_t holes = 0;                                      // closed loops of boundary edges
   size_t degenerateTriangles = 0;                        // a repeated vertex index
   std::vector<std::array<Vec3, 2>> sampleBoundaryEdges;  // a few, to show the user
+  std::vector<std::array<Vec3, 2>> sampleNonManifoldEdges;
 
   bool closed() const { return boundaryEdges == 0 && nonManifoldEdges == 0; }
   std::string describe() const;

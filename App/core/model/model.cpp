@@ -323,6 +323,8 @@ Model modelFromMesh(const Mesh& mesh, const std::string& source) {
   if (model.mesh.triangles.empty())
     throw Error(ErrorKind::BadInput, source + ": every triangle has zero area (repeated vertices)");
   model.bounds = model.mesh.bounds();
+  // The sheets apart first: a hole's rim through a point they shared is then a loop of its own.
+  model.edgesSplit = splitNonManifoldEdges(model.mesh);
   model.holesFilled = fillSmallHoles(model.mesh, kMaxFilledHoleSpan * model.bounds.diagonal());
   return model;
 }
@@ -366,6 +368,10 @@ void requireClosed(const Model& model) {
   if (topo.boundaryEdges > 0 && topo.nonManifoldEdges == 0 && model.kind == SourceKind::Mesh)
     message += "; holes up to " + std::to_string(static_cast<int>(kMaxFilledHoleSpan * 100)) +
                " % of the model's size across are filled, these are larger";
+  if (topo.nonManifoldEdges > 0 && model.kind == SourceKind::Mesh)
+    message +=
+        "; edges where closed parts meet are split apart, these could not be (an odd number of triangles "
+        "on the edge, or more running one way along it than the other: flipped or doubled triangles)";
   throw Error(ErrorKind::BadInput, message);
 }
 

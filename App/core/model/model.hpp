@@ -23,6 +23,7 @@ struct Model {
   Box3 bounds;                // of the shape (or mesh), mm
   double meshDeflection = 0;  // how far the triangulation may stray from the shape, mm
   size_t holesFilled = 0;     // small holes of a mesh source closed on reading
+  size_t edgesSplit = 0;      // edges where closed sheets of a mesh source touch, split on reading
 };
 
 // Holes of a mesh are filled when they are at most this share of the model's bounding-box
@@ -56,6 +57,11 @@ Mesh readOff(const std::string& path);
 // Closes every hole at most maxSpan across (its bounding-box diagonal) with a fan of triangles about its
 // centroid; returns how many. A hole through a vertex shared with another hole (a pinch) is left.
 size_t fillSmallHoles(Mesh& mesh, double maxSpan);
+// Splits the edges of three or more triangles where closed sheets touch along the edge:
+// the triangles are paired across the material about the edge, and the edge's ends get a
+// copy for every fan the pairing separates. Edges that cannot be paired so (an odd count,
+// flipped or doubled triangles) are left. Returns how many edges were split.
+size_t splitNonManifoldEdges(Mesh& mesh);
 // Vertices and faces of an OBJ file (polygons fanned); throws BadInput naming the line of
 // the first statement it cannot read, such as a face with a vertex index out of range.
 Mesh readObj(const std::string& path);

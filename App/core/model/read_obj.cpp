@@ -8,8 +8,6 @@
 // buffers (fuzzing, then valgrind on the plain build): a last line without a newline is
 // parsed past its end, a face of more than 1024 corners writes past a vector, and a '\'
 // continuation at its 4 KiB read boundary shrinks a vector below empty (std::bad_alloc).
-#include <algorithm>
-#include <charconv>
 #include <cstdint>
 #include <fstream>
 #include <string>
@@ -17,35 +15,10 @@
 #include <vector>
 
 #include "model/model.hpp"
+#include "model/words.hpp"
 #include "support/error.hpp"
 
 namespace sliceform {
-namespace {
-
-// The words of a statement, split at blanks, up to a '#' comment.
-std::vector<std::string_view> wordsOf(std::string_view text) {
-  text = text.substr(0, text.find('#'));
-  std::vector<std::string_view> words;
-  const char* blanks = " \t\r\f\v";
-  for (size_t start = text.find_first_not_of(blanks); start != std::string_view::npos;) {
-    const size_t end = std::min(text.find_first_of(blanks, start), text.size());
-    words.push_back(text.substr(start, end - start));
-    start = text.find_first_not_of(blanks, end);
-  }
-  return words;
-}
-
-// The whole word as a number (from_chars: no locale, "nan" and "inf" read as such, so
-// validateMesh names them); a leading '+' is allowed.
-template <class T>
-bool parse(std::string_view word, T& value) {
-  if (word.size() > 1 && word[0] == '+' && word[1] != '-') word.remove_prefix(1);
-  const auto [end, error] = std::from_chars(word.data(), word.data() + word.size(), value);
-  return error == std::errc() && end == word.data() + word.size();
-}
-
-}  // namespace
-
 Mesh readObj(const std::string& path) {
   std::ifstream file(path, std::ios::binary);
   if (!file) throw Error(ErrorKind::BadInput, path + ": cannot open the file");
@@ -74,7 +47,8 @@ Mesh readObj(const std::string& path) {
     if (words[0] == "v") {
       // x y z, then maybe w or a colour: only the position matters.
       Vec3 v;
-      if (words.size() < 4 || !parse(words[1], v.x) || !parse(words[2], v.y) || !parse(words[3], v.z))
+      if (words.size() < 4 || !parseNumber(words[1], v.x) || !parseNumber(words[2], v.y) ||
+          !parseNumber(words[3], v.z))
         throw fail(first, "a vertex needs three numbers");
       if (mesh.vertices.size() >= UINT32_MAX) throw fail(first, "more vertices than can be indexed");
       mesh.vertices.push_back(v);
@@ -85,7 +59,7 @@ Mesh readObj(const std::string& path) {
       const auto count = static_cast<long long>(mesh.vertices.size());
       for (size_t k = 1; k < words.size(); ++k) {
         long long index = 0;
-        if (!parse(words[k].substr(0, words[k].find('/')), index))
+        if (!parseNumber(words[k].substr(0, words[k].find('/')), index))
           throw fail(first, "\"" + std::string(words[k]) + "\" is not a vertex index");
         const long long resolved = index < 0 ? count + 1 + index : index;
         if (resolved < 1 || resolved > count)

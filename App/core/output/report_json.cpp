@@ -76,6 +76,7 @@ json reportJson(const Model& model, const DesignParams& params, const Design& d)
                   {"kind", model.kind == SourceKind::Brep ? "brep" : "mesh"},
                   {"triangles", model.mesh.triangles.size()},
                   {"holes_filled", model.holesFilled},
+                  {"edges_split", model.edgesSplit},
                   {"bbox_mm", {vec(lo), vec(hi)}}};
   json patches = json::array();
   for (int k = 0; k < static_cast<int>(a.scaffold.patches.size()); ++k) {

@@ -6,9 +6,10 @@
 //   V-extent of its material, one slice interval wide) against the lattice's footprint (the
 //   same strips for the slices that carry a patch, in both families); it tells how evenly
 //   the patches visit the model seen from above;
-// - volume IoU: the slices swept by one interval against the cylinders swept the same way;
-//   the cylinders contain the slices, so it is model volume / cylinder volume, the smaller
-//   of the two families.
+// - volume IoU: the slices swept by one interval against the cylinders swept the same way,
+//   slice by slice (intersection over union of the material and the cylinders spanning
+//   it), the smaller of the two families. Cylinders need not contain their slices (Reeb
+//   simplification moves an absorbed branch into its neighbour's end patch).
 #pragma once
 
 #include <vector>
