@@ -269,7 +269,9 @@ Label setLabel(const std::string& text, Vec2 at, double height, bool vertical) {
 }
 
 LabelPaper labelPaper(const Region2d& paper) {
-  return {erode(simplified(paper), kEdgeMargin)};
+  // A rounded erosion's arcs are chords with their ends on the true arcs, up to the arc
+  // tolerance nearer the cut: eroding that much more keeps the whole margin.
+  return {erode(simplified(paper), kEdgeMargin + kLabelTolerance)};
 }
 
 Label placeName(const Region2d& paper, const std::string& id) {
