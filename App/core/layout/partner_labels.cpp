@@ -96,10 +96,11 @@ std::optional<Label> placeAt(const Region2d& inner, const std::vector<Label>& ta
   const std::vector<Box2> lines = otherHinges(spots, s, {y.lo - half.y, y.hi + half.y});
   // The room between `lo` and `hi` nearest either side of the slot, the nearer first, if
   // it reads as this slot's (on its line a label continues its slot).
+  bool none = false;
   const auto nearest = [&]() -> std::optional<Label> {
     if (lo >= hi) return std::nullopt;
     const Region2d room = freeFor(inner, taken, half, {{lo, y.lo}, {hi, y.hi}, false}, lines);
-    if (room.empty()) return std::nullopt;
+    if ((none = room.empty())) return std::nullopt;
     Vec2 at[] = {nearestPoint(room, {s.x + side, s.y}), nearestPoint(room, {s.x - side, s.y})};
     if (std::hypot(at[1].x - s.x + side, at[1].y - s.y) < std::hypot(at[0].x - s.x - side, at[0].y - s.y) - 1e-9)
       std::swap(at[0], at[1]);
@@ -107,7 +108,7 @@ std::optional<Label> placeAt(const Region2d& inner, const std::vector<Label>& ta
       if (way == Way::OnLine || readsAsOwn(spots, s, c, half)) return setLabel(s.text, c, height, vertical);
     return std::nullopt;
   };
-  if (std::optional<Label> label = nearest(); label || way == Way::OnLine) return label;
+  if (std::optional<Label> label = nearest(); label || none || way == Way::OnLine) return label;
   // The nearest room may read as a neighbour's where nearer room, further along, would not:
   // then the room nearer this line than any other hinge's along the window.
   const Interval own = nearerOwn(spots, s, {y.lo - half.y, y.hi + half.y});
