@@ -167,6 +167,18 @@ std::vector<Label> present(const std::vector<std::optional<Label>>& labels, int&
   return out;
 }
 
+// Whether `label` lies within `r` of the hinge of a spot in `order` left without a label.
+bool nearMissing(const std::vector<LabelSpot>& spots, const std::vector<size_t>& order,
+                 const std::vector<std::optional<Label>>& labels, const Label& label, double r) {
+  const Vec2 h = halfSize(label.text, label.height, label.vertical), c = label.at;
+  for (const size_t j : order) {
+    const LabelSpot& m = spots[j];
+    if (!labels[j] && c.x + h.x > m.x - r && c.x - h.x < m.x + r && c.y + h.y > m.w.lo - r && c.y - h.y < m.w.hi + r)
+      return true;
+  }
+  return false;
+}
+
 std::vector<size_t> inOrder(size_t n) {
   std::vector<size_t> order(n);
   for (size_t i = 0; i < n; ++i) order[i] = i;
@@ -198,19 +210,30 @@ PatchLabels labelPatch(const LabelPaper& paper, const std::string& id, const std
                                return none;
                              }),
               order.end());
-  // Where a slot is left without, first come, first served gave its room away. So again:
-  // the patch id last (set first at the deepest spot, it may sit where slots' labels need
-  // to be, and finds room around them), the slots left out first (they have least room),
-  // twice, then everything at the smallest size (small labels pack closer). The try that
-  // labels most slots stands.
+  // Where a slot is left without, first come, first served gave its room away. So again
+  // around it: the labels within a label's length of its hinge are lifted and set again,
+  // the slots left out first (they have least room), with the patch id last (set first at
+  // the deepest spot, it may sit where slots' labels need to be; it finds room after);
+  // twice, then at the smallest size (small labels pack closer). The try that labels most
+  // slots stands.
   for (int attempt = 0; attempt < 3 && out.missing > hopeless; ++attempt) {
     std::stable_partition(order.begin(), order.end(), [&](size_t i) { return !partners[i]; });
-    partners = partnerLabels(paper.inner, spots, order, {}, attempt == 2 ? kMinLabelHeight : height);
-    PatchLabels again;
-    again.partners = present(partners, again.missing);
-    if (again.missing >= out.missing) continue;
-    again.name = placeName(paper, id, again.partners);
-    if (again.name.height > 0) out = std::move(again);  // the patch id comes first
+    std::vector<size_t> again;
+    std::vector<Label> kept;
+    for (const size_t i : order) {
+      if (!partners[i] || nearMissing(spots, order, partners, *partners[i], labelWidth(spots[i].text, height)))
+        again.push_back(i);
+      else
+        kept.push_back(*partners[i]);
+    }
+    const std::vector<std::optional<Label>> set =
+        partnerLabels(paper.inner, spots, again, kept, attempt == 2 ? kMinLabelHeight : height);
+    for (const size_t i : again) partners[i] = set[i];
+    PatchLabels next;
+    next.partners = present(partners, next.missing);
+    if (next.missing >= out.missing) continue;
+    next.name = placeName(paper, id, next.partners);
+    if (next.name.height > 0) out = std::move(next);  // the patch id comes first
   }
   return out;
 }
