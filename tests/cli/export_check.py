@@ -209,6 +209,11 @@ def main():
             if key not in sheets:
                 fail(f"report sheets lacks {key}")
 
+        # Slots left without their partner's id: the total is the patches' sum.
+        missing = sum(p["partner_labels_missing"] for p in report["patches"])
+        if report.get("partner_labels_missing") != missing:
+            fail(f"report partner_labels_missing {report.get('partner_labels_missing')}, patches sum to {missing}")
+
         # PDF: pages, page size, and every page renders.
         info = subprocess.run(["pdfinfo", os.path.join(out, "sheets.pdf")], capture_output=True, text=True).stdout
         pages = int(re.search(r"Pages:\s+(\d+)", info).group(1))

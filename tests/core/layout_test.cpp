@@ -114,7 +114,7 @@ TEST(Labels, PartnerWindowKeepsOnlyPaper) {
     if (hole) std::reverse(l.begin(), l.end());
     return l;
   };
-  const LabelSpot spot{"V7", 50, {40, 60}, 50, 0.5};
+  const LabelSpot spot{"V7", 50, {40, 60}, 50, 0.5, {40, 60}};
   const Region2d frame =
       Region2d::fromLoops({square(0, 0, 100), square(20, 20, 60, true)}, FillRule::NonZero);
   int missing = 0;
@@ -153,7 +153,7 @@ TEST(Labels, OnCurvedPaperBoxesStayClearOfTheCuts) {
   std::vector<LabelSpot> spots;
   for (double x = -27.5; x <= 27.5; x += 2.5)
     for (const Interval& w : paper.intervalsOnLine({x, 0}, {0, 1}))
-      spots.push_back({"V" + std::to_string(spots.size()), x, w, (w.lo + w.hi) / 2, 0.5});
+      spots.push_back({"V" + std::to_string(spots.size()), x, w, (w.lo + w.hi) / 2, 0.5, w});
   int missing = 0;
   const std::vector<Label> labels = placePartners(paper, spots, {name}, 3.5, missing);
   EXPECT_EQ(labels.size() + missing, spots.size());

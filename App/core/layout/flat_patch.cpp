@@ -108,12 +108,15 @@ std::vector<LabelSpot> partnerSpots(const Design& d, int patch) {
     const Slot slot = isU ? uSlot(r.slots[h]) : vSlot(r.slots[h]);
     const Interval& at = hinge.holds ? hinge.grip : hinge.w;
     const double root = (at.lo + at.hi) / 2;
-    // Beside the slot's stretch of the hinge: above the root for an up slot, below for down.
-    const double y = slot == Slot::Up     ? (root + hinge.w.hi) / 2
-                     : slot == Slot::Down ? (hinge.w.lo + root) / 2
-                                          : root;
+    // The slot's stretch of the hinge: above the root for an up slot, below for down; its
+    // label beside the middle of that.
+    const Interval cut = slot == Slot::Up        ? Interval{root, hinge.w.hi}
+                         : slot == Slot::Down    ? Interval{hinge.w.lo, root}
+                         : slot == Slot::Through ? hinge.w
+                                                 : Interval{root, root};
+    const double y = slot == Slot::Through ? root : (cut.lo + cut.hi) / 2;
     spots.push_back({patchId(a.scaffold, partner), lineX(f, g, a.scaffold.patches[partner].position), hinge.w,
-                     y, r.params.width()});
+                     y, r.params.width(), cut});
   }
   return spots;
 }
@@ -162,9 +165,10 @@ FlatPatch flattenPatch(const Design& d, int k) {
   flat.cut = cutLoops(kerfCompensated(d.patches[k].shape, d.realization.params.kerf),
                       PlaneMap{plane.xAxis, plane.yAxis});
   const LabelPaper paper = labelPaper(flat.outline);
-  flat.name = placeName(paper, flat.id);
-  const double partnerHeight = std::max(flat.name.height * 0.6, 1.0);
-  flat.partners = placePartners(paper, partnerSpots(d, k), {flat.name}, partnerHeight, flat.partnersMissing);
+  PatchLabels labels = labelPatch(paper, flat.id, partnerSpots(d, k));
+  flat.name = std::move(labels.name);
+  flat.partners = std::move(labels.partners);
+  flat.partnersMissing = labels.missing;
   return flat;
 }
 

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 #include "layout/labels.hpp"
+#include "layout/label_room.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -36,7 +37,6 @@ const std::map<char, Glyph>& font() {
 constexpr double kAdvance = 5.5;  // grid units per character
 constexpr double kCap = 6;
 constexpr double kEdgeMargin = 0.6;  // mm of paper between a label and any cut
-constexpr double kGap = 0.6;         // mm between labels, and between a label and its slot
 
 using ClipperLib::cInt;
 using ClipperLib::IntPoint;
@@ -186,7 +186,8 @@ Vec2 deepestPoint(const Region2d& region) {
   return best.loops().front().front();
 }
 
-// The point of `region` nearest to `p` (p itself when inside).
+}  // namespace
+
 Vec2 nearestPoint(const Region2d& region, Vec2 p) {
   if (contains(region, p)) return p;
   Vec2 best = p;
@@ -208,13 +209,12 @@ Vec2 halfSize(const std::string& text, double height, bool vertical) {
   return vertical ? Vec2{h, w} : Vec2{w, h};
 }
 
-// The paper a label of half size `half` may have its centre on: inside `inner` (the paper
-// eroded by the edge margin) with its whole box, clear of the labels already placed, and
-// inside `window`. A window needs only the boundary near it: the window
-// minus the bands of the nearby edges and the labels' boxes falls into pieces that each lie
-// wholly inside or wholly outside `inner` (no band crosses them, and a box that stays clear
-// of the boundary cannot change sides), so one vertex of each piece decides it.
-Region2d freeFor(const Region2d& inner, const std::vector<Label>& taken, Vec2 half, const Box2& window) {
+// A window needs only the boundary near it: the window minus the bands of the nearby edges
+// and the labels' boxes falls into pieces that each lie wholly inside or wholly outside
+// `inner` (no band crosses them, and a box that stays clear of the boundary cannot change
+// sides), so one vertex of each piece decides it.
+Region2d freeFor(const Region2d& inner, const std::vector<Label>& taken, Vec2 half, const Box2& window,
+                 const std::vector<Box2>& keepOff) {
   if (inner.empty()) return {};
   const cInt w = Region2d::toUnits(half.x), h = Region2d::toUnits(half.y);
   const UnitBox near{{Region2d::toUnits(window.min.x), Region2d::toUnits(window.min.y)},
@@ -227,6 +227,12 @@ Region2d freeFor(const Region2d& inner, const std::vector<Label>& taken, Vec2 ha
     const double hx = other.x + half.x + kGap, hy = other.y + half.y + kGap;
     const UnitBox box{{Region2d::toUnits(l.at.x - hx), Region2d::toUnits(l.at.y - hy)},
                       {Region2d::toUnits(l.at.x + hx), Region2d::toUnits(l.at.y + hy)}};
+    if (box.meets(near)) clip.push_back(boxPath(box));
+  }
+  // So do the boxes in `keepOff`, with no gap.
+  for (const Box2& b : keepOff) {
+    const UnitBox box{{Region2d::toUnits(b.min.x - half.x), Region2d::toUnits(b.min.y - half.y)},
+                      {Region2d::toUnits(b.max.x + half.x), Region2d::toUnits(b.max.y + half.y)}};
     if (box.meets(near)) clip.push_back(boxPath(box));
   }
   ClipperLib::Clipper clipper;
@@ -242,8 +248,6 @@ Region2d freeFor(const Region2d& inner, const std::vector<Label>& taken, Vec2 ha
   }
   return Region2d::fromPaths(room, FillRule::NonZero);
 }
-
-}  // namespace
 
 double labelWidth(const std::string& text, double height) {
   return text.empty() ? 0.0 : (text.size() * kAdvance - (kAdvance - 4)) * height / kCap;
@@ -269,7 +273,9 @@ Label setLabel(const std::string& text, Vec2 at, double height, bool vertical) {
 }
 
 LabelPaper labelPaper(const Region2d& paper) {
-  return {erode(simplified(paper), kEdgeMargin)};
+  // A rounded erosion's arcs are chords with their ends on the true arcs, up to the arc
+  // tolerance nearer the cut: eroding that much more keeps the whole margin.
+  return {erode(simplified(paper), kEdgeMargin + kLabelTolerance)};
 }
 
 Label placeName(const Region2d& paper, const std::string& id) {
@@ -281,7 +287,7 @@ std::vector<Label> placePartners(const Region2d& paper, const std::vector<LabelS
   return placePartners(labelPaper(paper), spots, taken, maxHeight, missing);
 }
 
-Label placeName(const LabelPaper& paper, const std::string& id) {
+Label placeName(const LabelPaper& paper, const std::string& id, const std::vector<Label>& taken) {
   // Every box size searches the same inner paper, eroded once.
   const Region2d& inner = paper.inner;
   for (const double height : {8.0, 6.0, 5.0, 4.0, 3.0, 2.5, 2.0, 1.6, 1.3, 1.0}) {
@@ -298,38 +304,11 @@ Label placeName(const LabelPaper& paper, const std::string& id) {
     within.min = {within.min.x - 0.01, within.min.y - 0.01};
     within.max = {within.max.x + 0.01, within.max.y + 0.01};
     for (const bool vertical : {false, true}) {
-      const Region2d room = freeFor(inner, {}, halfSize(id, height, vertical), within);
+      const Region2d room = freeFor(inner, taken, halfSize(id, height, vertical), within);
       if (!room.empty()) return setLabel(id, deepestPoint(room), height, vertical);
     }
   }
   return Label{id, {}, 0, false, {}};
-}
-
-std::vector<Label> placePartners(const LabelPaper& paper, const std::vector<LabelSpot>& spots,
-                                 const std::vector<Label>& taken, double maxHeight, int& missing) {
-  const Region2d& inner = paper.inner;
-  std::vector<Label> placed, all = taken;
-  for (const LabelSpot& s : spots) {
-    bool done = false;
-    for (double height = std::min(maxHeight, 3.5); height >= 1.0 - 1e-9 && !done; height *= 0.8) {
-      const Vec2 half = halfSize(s.text, height, false);
-      // Beside the slot, over the hinge's stretch of the line, on either side.
-      const double reach = s.slotWidth / 2 + kGap + 2 * half.x + kGap;
-      const double mid = (s.w.lo + s.w.hi) / 2, halfSpan = (s.w.hi - s.w.lo) / 2 + half.y;
-      const Box2 near{{s.x - reach, mid - halfSpan}, {s.x + reach, mid + halfSpan}, false};
-      const Region2d room = freeFor(inner, all, half, near);
-      if (room.empty()) continue;
-      const double side = s.slotWidth / 2 + kGap + half.x;
-      const Vec2 right = nearestPoint(room, {s.x + side, s.y}), left = nearestPoint(room, {s.x - side, s.y});
-      const bool useRight = std::hypot(right.x - s.x - side, right.y - s.y) <=
-                            std::hypot(left.x - s.x + side, left.y - s.y) + 1e-9;
-      placed.push_back(setLabel(s.text, useRight ? right : left, height, false));
-      all.push_back(placed.back());
-      done = true;
-    }
-    if (!done) ++missing;
-  }
-  return placed;
 }
 
 }  // namespace sliceform

@@ -13,6 +13,10 @@
 
 namespace sliceform {
 
+// The smallest cap height any label is engraved at, mm: still legible under a laser's or a
+// fine pen's line (docs/decisions.md, "Labels are engraving").
+constexpr double kMinLabelHeight = 1.0;
+
 // The text as strokes, its box centred on `at`, cap height `height` mm.
 Label setLabel(const std::string& text, Vec2 at, double height, bool vertical);
 // Width of the text box at cap height `height`, mm.
@@ -23,8 +27,9 @@ struct LabelSpot {
   std::string text;  // the partner's id
   double x = 0;      // the hinge line
   Interval w;        // the hinge segment along it
-  double y = 0;      // preferred height: beside the slot
+  double y = 0;      // preferred height: beside the middle of the slot
   double slotWidth = 0;
+  Interval slot;     // the slot's stretch of the line (a point, the root, where none is cut)
 };
 
 // Where a label's box may lie on a patch: its paper less a margin along every cut. Both
@@ -35,14 +40,25 @@ struct LabelPaper {
 LabelPaper labelPaper(const Region2d& paper);
 
 // The patch id at the deepest spot that holds it (up to 8 mm high), horizontal if it fits
-// there, else upright; empty strokes when no box of 1 mm fits.
-Label placeName(const LabelPaper& paper, const std::string& id);
+// there, else upright, clear of `taken` labels; empty strokes when no box of 1 mm fits.
+Label placeName(const LabelPaper& paper, const std::string& id, const std::vector<Label>& taken = {});
 Label placeName(const Region2d& paper, const std::string& id);
-// Partner labels beside each hinge, clear of each other and of `taken` labels; spots with
-// no room are left out and counted in `missing`.
+// Partner labels at each slot, in spot order: beside it, across or turned along it, or on
+// its hinge line beyond it; up to `maxHeight` (3.5 mm at most) and down to kMinLabelHeight;
+// clear of each other and of `taken` labels. Spots with no room are left out and counted
+// in `missing`.
 std::vector<Label> placePartners(const LabelPaper& paper, const std::vector<LabelSpot>& spots,
                                  const std::vector<Label>& taken, double maxHeight, int& missing);
 std::vector<Label> placePartners(const Region2d& paper, const std::vector<LabelSpot>& spots,
                                  const std::vector<Label>& taken, double maxHeight, int& missing);
+
+// A patch's labels: its id and, at each slot, its partner's (placed again in other orders
+// when a slot is left without); `missing` counts the slots left without one.
+struct PatchLabels {
+  Label name;
+  std::vector<Label> partners;
+  int missing = 0;
+};
+PatchLabels labelPatch(const LabelPaper& paper, const std::string& id, const std::vector<LabelSpot>& spots);
 
 }  // namespace sliceform

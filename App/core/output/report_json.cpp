@@ -161,6 +161,11 @@ json reportJson(const Model& model, const DesignParams& params, const Design& d)
                    {"utilisation", l.packing.utilisation},
                    {"shelf_count", l.shelf.sheets},
                    {"shelf_utilisation", l.shelf.utilisation}};
+  // Slots without their partner's id: what whoever assembles has to work out from the 3D.
+  int partners = 0, missing = 0;
+  for (const FlatPatch& p : l.patches) partners += static_cast<int>(p.partners.size()), missing += p.partnersMissing;
+  doc["partner_labels"] = partners;
+  doc["partner_labels_missing"] = missing;
   doc["cylinders"] = {{"u", a.uCylinders.size()},
                       {"v", a.vCylinders.size()},
                       {"uncovered_u", a.scaffold.uncoveredU},

@@ -1,0 +1,28 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// Where a label's box may lie on a patch: what the patch id's placer (labels.cpp) and the
+// partner ids' placer (partner_labels.cpp) share. Internal to the layout stage.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "geometry/region2d.hpp"
+#include "layout/flat_patch.hpp"
+
+namespace sliceform {
+
+constexpr double kGap = 0.6;  // mm between labels, and between a label and its slot
+
+// Half the width and height of a label's box, turned a quarter when `vertical`.
+Vec2 halfSize(const std::string& text, double height, bool vertical);
+
+// The centres a box of half size `half` may have: the whole box inside `inner` (the paper
+// eroded by the edge margin), `kGap` clear of the `taken` labels' boxes, not over any box
+// of `keepOff` (a segment will do), and the centre inside `window`.
+Region2d freeFor(const Region2d& inner, const std::vector<Label>& taken, Vec2 half, const Box2& window,
+                 const std::vector<Box2>& keepOff = {});
+
+// The point of `region` nearest to `p` (p itself when inside).
+Vec2 nearestPoint(const Region2d& region, Vec2 p);
+
+}  // namespace sliceform
