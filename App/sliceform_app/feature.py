@@ -61,6 +61,10 @@ def _key(source, params):
     return digest.hexdigest()
 
 
+def _mm(value):
+    return "-" if value is None else "{:.2f}".format(value)
+
+
 def summary(report):
     c, i = report["certificate"], report["interlocks"]
     return "\n".join(
@@ -73,11 +77,15 @@ def summary(report):
             "smallest slot-to-edge distance {:.2f} mm; shortest hinge {:.2f} mm".format(
                 report["min_slot_edge_distance_mm"], report["min_hinge_length_mm"]
             ),
+            "closest stacked patches {} mm apart, {} mm of paper between their slots".format(
+                _mm(report.get("min_patch_spacing_mm")), _mm(report.get("min_finger_mm"))
+            ),
             "quality: volume IoU {:.3f}".format(report["quality"]["volume_iou"]),
             "sheets: {} {} ({:.0f} % used)".format(
                 report["sheets"]["count"], report["sheets"]["name"], 100 * report["sheets"]["utilisation"]
             ),
         ]
+        + ["cannot be built: " + p for p in report["verdict"]["problems"]]
     )
 
 
@@ -154,6 +162,9 @@ class Sliceform:
         obj.Interlocks = int(report["interlocks"]["remaining"])
         obj.SmallestSlotEdgeDistance = float(report["min_slot_edge_distance_mm"])
         obj.ShortestHinge = float(report["min_hinge_length_mm"])
+        obj.MinPatchSpacing = float(report.get("min_patch_spacing_mm") or 0.0)
+        obj.MinFinger = max(0.0, float(report.get("min_finger_mm") or 0.0))
+        obj.Buildable = bool(report["verdict"]["buildable"])
         obj.VolumeIoU = float(report["quality"]["volume_iou"])
         obj.SheetCount = int(report["sheets"]["count"])
         obj.Report = summary(report)

@@ -10,15 +10,10 @@
 #include <Bnd_Box.hxx>
 #include <GProp_GProps.hxx>
 #include <TopExp_Explorer.hxx>
-#include <BRepPrimAPI_MakeBox.hxx>
-#include <BRepPrimAPI_MakeCylinder.hxx>
-#include <BRep_Builder.hxx>
 #include <TopoDS.hxx>
-#include <TopoDS_Compound.hxx>
 
 #include "arrangement/arrange.hpp"
 #include "assembly/fold.hpp"
-#include "pipeline/design.hpp"
 #include "exact/patch_faces.hpp"
 #include "geometry/simplify.hpp"
 #include "realization/realize.hpp"
@@ -250,40 +245,6 @@ TEST(Fold, AssemblyIsWrittenAsStepAndBrep) {
   EXPECT_FALSE(std::filesystem::exists(dir.file("a.obj")));
 }
 
-
-// An assembly of touching solids, as CAD users model it: two plates joined by four rods
-// standing on the lower plate and through the upper one, and a bar lying across the top.
-// Each solid is its own shape in a compound; the slices cut all of them.
-TopoDS_Shape rodsAndPlates() {
-  BRep_Builder builder;
-  TopoDS_Compound c;
-  builder.MakeCompound(c);
-  builder.Add(c, BRepPrimAPI_MakeBox(gp_Pnt(0, 0, 0), gp_Pnt(120, 80, 6)).Shape());
-  builder.Add(c, BRepPrimAPI_MakeBox(gp_Pnt(0, 0, 60), gp_Pnt(120, 80, 66)).Shape());
-  for (const double x : {20.0, 100.0})
-    for (const double y : {20.0, 60.0})
-      builder.Add(c, BRepPrimAPI_MakeCylinder(gp_Ax2(gp_Pnt(x, y, 6), gp_Dir(0, 0, 1)), 6, 54).Shape());
-  builder.Add(c, BRepPrimAPI_MakeBox(gp_Pnt(10, 34, 66), gp_Pnt(110, 46, 78)).Shape());
-  return c;
-}
-
-TEST(ExactPatches, TouchingSolidsEmitWhatWasChecked) {
-  DesignParams params;
-  params.arrangement.slices = 64;
-  const Model model = modelFromShape(rodsAndPlates(), "rods and plates");
-  const sliceform::Design d = runDesign(model, params);
-  std::vector<Region2d> outlines;
-  for (const PatchFace& f : d.patches) outlines.push_back(f.outline);
-  const RealizationInput in = realizationInput(d.arrangement, model.meshDeflection);
-  const Emitted e = checkEmitted(in, outlines, params.slots);
-  EXPECT_TRUE(e.collisions.empty()) << e.collisions.size() << " pairs, up to " << e.worstOverlap << " mm";
-  EXPECT_EQ(e.splitPatches, 0);
-  EXPECT_EQ(e.interlocks, 0);
-  EXPECT_TRUE(d.certificate.stable) << d.certificate.reason;
-  for (const std::string& p : designProblems(d)) ADD_FAILURE() << p;
-  // What is listed as a hinge is where both emitted patches meet.
-  for (size_t h = 0; h < d.arrangement.scaffold.hinges.size(); ++h) EXPECT_EQ(e.meets[h], d.emitted.meets[h]);
-}
 
 }  // namespace
 }  // namespace sliceform

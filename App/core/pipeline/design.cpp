@@ -100,8 +100,25 @@ std::vector<std::string> designProblems(const Design& d) {
       << d.realization.lostPins << " pair(s) lost every holding hinge to the slots";
     out.push_back(s.str());
   }
-  if (e.interlocks > 0) out.push_back(std::to_string(e.interlocks) + " interlocked loop pair(s)");
-  if (e.splitPatches > 0) out.push_back(std::to_string(e.splitPatches) + " patch(es) in pieces");
+  // A few ids say where; the count says how many.
+  const auto where = [&](const std::vector<int>& patches) {
+    std::string s;
+    for (size_t i = 0; i < patches.size() && i < 6; ++i) s += (i ? ", " : "") + id(patches[i]);
+    return patches.size() > 6 ? s + ", ..." : s;
+  };
+  if (e.interlocks > 0) {
+    std::vector<int> pairs;
+    for (const auto& [u, v] : e.interlocked) pairs.insert(pairs.end(), {u, v});
+    out.push_back(std::to_string(e.interlocks) + " interlocked loop pair(s) (" + where(pairs) +
+                  "): the slot search found no slots that free them (try other --u/--v directions)");
+  }
+  if (e.splitPatches > 0) {
+    std::ostringstream s;
+    s << e.splitPatches << " patch(es) in pieces (" << where(e.split) << "): their slots leave paper narrower than "
+      << 2 * slotNeck(d.realization.params, 0) << " mm between them or to the edge (try a larger --min-spacing for "
+      << "fewer patches farther apart, or a thinner --thickness)";
+    out.push_back(s.str());
+  }
   if (!e.collisions.empty()) {
     std::ostringstream s;
     s << e.collisions.size() << " U/V pair(s) overlap along their common line with no slot between them (up to "

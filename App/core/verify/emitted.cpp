@@ -61,7 +61,11 @@ Emitted checkEmitted(const RealizationInput& input, const std::vector<Region2d>&
     pieces[p] = slottedPieces(ps[p].shape, outlines[p], params, input.tolerance);
   });
   for (int p = 0; p < n; ++p)
-    if (pieces[p] != 1) ++e.splitPatches, failing.insert(p);
+    if (pieces[p] != 1) {
+      e.split.push_back(p);
+      failing.insert(p);
+    }
+  e.splitPatches = static_cast<int>(e.split.size());
 
   // Where each patch lies on the line of every patch of the other family.
   const auto on = [&](int p, int q) {
@@ -105,8 +109,10 @@ Emitted checkEmitted(const RealizationInput& input, const std::vector<Region2d>&
   for (int p = 0; p < n; ++p) holes[p] = holeLoops(outlines[p], ps[p].position);
   for (const int a : us) {
     for (const int b : vs) {
-      if (interlockCount(holes[a], input.uFrame, holes[b], input.vFrame) == 0) continue;
-      ++e.interlocks;
+      const int count = interlockCount(holes[a], input.uFrame, holes[b], input.vFrame);
+      if (count == 0) continue;
+      e.interlocks += count;
+      e.interlocked.push_back({a, b});
       failing.insert(a);
       failing.insert(b);
     }
