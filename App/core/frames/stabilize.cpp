@@ -148,9 +148,12 @@ class Builder {
         const double sepV = std::fabs(pos(vs[q1]) - pos(vs[q2])) / std::max(extentV, 1e-9);
         if (std::min(sepV, 0.25) <= bestScore) continue;
         int first = -1, far = -1;  // a held U-patch, and the held one farthest from it
+        int low = -1, high = -1;   // the held U-patches lowest and highest along U
         for (size_t w = 0; w < words; ++w) {
           for (uint64_t bits = holding[q1][w] & holding[q2][w]; bits; bits &= bits - 1) {
             const int p = static_cast<int>(64 * w + __builtin_ctzll(bits));
+            if (low < 0 || pos(us[p]) < pos(us[low])) low = p;
+            if (high < 0 || pos(us[p]) > pos(us[high])) high = p;
             if (first < 0)
               first = p;
             else if (!apart(us[p], us[first]))
@@ -160,6 +163,9 @@ class Builder {
               far = p;
           }
         }
+        // None far enough from the first (the spacing rule): the two held farthest apart.
+        if (far < 0 && low >= 0 && us[low].slice != us[high].slice && apart(us[low], us[high]))
+          first = low, far = high;
         if (far < 0 || us[far].slice == us[first].slice) continue;
         const double sepU = std::fabs(pos(us[far]) - pos(us[first])) / std::max(extentU, 1e-9);
         const double score = std::min({sepU, sepV, 0.25});
