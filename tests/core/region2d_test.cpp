@@ -93,6 +93,18 @@ TEST(Region2d, ComponentsOfSquareWithHoleAndIsland) {
   EXPECT_EQ(island.components().size(), 1u);
 }
 
+// What a patch covers seen from the side (the spacing rule's "stacked"): holes filled,
+// islands in them included, two separate squares still two.
+TEST(Region2d, WithoutHolesFillsHolesAndKeepsPieces) {
+  const Region2d ring = Region2d::fromLoops({rect(0, 0, 10, 10), rect(2, 2, 8, 8), rect(4, 4, 6, 6)});
+  const Region2d filled = ring.withoutHoles();
+  EXPECT_NEAR(filled.area(), 100.0, kTiny);
+  EXPECT_EQ(filled.holeCount(), 0);
+  const Region2d two = Region2d::fromLoops({rect(0, 0, 1, 1), rect(3, 0, 4, 1)}).withoutHoles();
+  EXPECT_EQ(two.components().size(), 2u);
+  EXPECT_NEAR(two.area(), 2.0, kTiny);
+}
+
 // subtractComponents reads the pieces off the difference's own tree; they must be the
 // pieces (same paths) that subtract(...).components() gives, also where pieces touch at a
 // corner, islands sit in holes, and a cut leaves a piece inside another's hole.

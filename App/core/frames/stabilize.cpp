@@ -17,14 +17,6 @@ namespace {
 // rule must not fail it by a rounding error.
 constexpr double kSpacingSlack = 1e-6;
 
-// Outer loops only: what a patch covers seen along its normal.
-Region2d filled(const Region2d& r) {
-  ClipperLib::Paths outer;
-  for (const ClipperLib::Path& p : r.paths())
-    if (ClipperLib::Orientation(p)) outer.push_back(p);
-  return Region2d::fromPaths(outer, FillRule::NonZero);
-}
-
 struct Candidate {
   Family family = Family::U;
   int cylinder = 0;
@@ -290,7 +282,7 @@ bool stackedSections(const Region2d& a, const Region2d& b) {
   if (ba.empty || bb.empty || ba.min.x >= bb.max.x || bb.min.x >= ba.max.x || ba.min.y >= bb.max.y ||
       bb.min.y >= ba.max.y)
     return false;
-  return !filled(a).intersect(filled(b)).empty();
+  return !a.withoutHoles().intersect(b.withoutHoles()).empty();
 }
 
 bool movePatch(Scaffold& s, const SliceSet& u, const SliceSet& v, const std::vector<Cylinder>& uCylinders,

@@ -60,6 +60,13 @@ Region2d Region2d::fromPaths(const Paths& paths, FillRule rule) {
   return region;
 }
 
+Region2d Region2d::withoutHoles() const {
+  Paths outer;
+  for (const ClipperLib::Path& p : paths_)
+    if (ClipperLib::Orientation(p)) outer.push_back(p);
+  return fromPaths(outer, FillRule::NonZero);
+}
+
 Region2d Region2d::uniteAll(const std::vector<Region2d>& regions) {
   // Pairwise, as a balanced tree: one sweep over every outline at once pays for every
   // crossing of every pair (hundreds of stacked, similar slices: quadratic), while a union

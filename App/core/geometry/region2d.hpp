@@ -44,6 +44,9 @@ class Region2d {
   Box2 bounds() const;
   int holeCount() const;
 
+  // The region with its holes filled: what it covers seen from the side, as an outline.
+  Region2d withoutHoles() const;
+
   // Connected pieces, each one outer loop with its holes.
   std::vector<Region2d> components() const;
   // subtract(other).components() in one sweep: the pieces come straight from the

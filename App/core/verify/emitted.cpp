@@ -25,15 +25,6 @@ double length(const std::vector<Interval>& intervals) {
   return sum;
 }
 
-// Outer loops only: what a patch covers seen along its normal (a patch seen through the
-// other's hole still has its slots beside the other's on a partner crossing both).
-Region2d filled(const Region2d& r) {
-  ClipperLib::Paths outer;
-  for (const ClipperLib::Path& p : r.paths())
-    if (ClipperLib::Orientation(p)) outer.push_back(p);
-  return Region2d::fromPaths(outer, FillRule::NonZero);
-}
-
 bool boxesOverlap(const Box2& a, const Box2& b) {
   return !a.empty && !b.empty && a.min.x < b.max.x && b.min.x < a.max.x && a.min.y < b.max.y &&
          b.min.y < a.max.y;
@@ -119,8 +110,10 @@ Emitted checkEmitted(const RealizationInput& input, const std::vector<Region2d>&
   }
 
   // The closest stacked pair of one family; coplanar pieces of one slice lie side by side.
+  // Holes filled: a patch seen through the other's hole still has its slots beside the
+  // other's on a partner crossing both.
   std::vector<Region2d> cover(n);
-  parallelFor(static_cast<size_t>(n), [&](size_t p) { cover[p] = filled(outlines[p]); });
+  parallelFor(static_cast<size_t>(n), [&](size_t p) { cover[p] = outlines[p].withoutHoles(); });
   double closest = HUGE_VAL;
   for (int a = 0; a < n; ++a) {
     for (int b = a + 1; b < n; ++b) {
