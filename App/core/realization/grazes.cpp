@@ -30,7 +30,7 @@ HingeKey keyOf(const ScaffoldHinge& h) {
 }  // namespace
 
 std::vector<int> grazingHinges(const RealizationInput& in, const SlotParams& params,
-                               const std::vector<int>& which) {
+                               const std::vector<int>& which, CutterCache* cache) {
   std::vector<int> hinges = which;
   if (hinges.empty())
     for (int h = 0; h < static_cast<int>(in.hinges.size()); ++h) hinges.push_back(h);
@@ -38,15 +38,31 @@ std::vector<int> grazingHinges(const RealizationInput& in, const SlotParams& par
   const int n = static_cast<int>(in.patches.size());
   std::vector<char> needed(n, 0);
   for (const int h : hinges) needed[in.hinges[h].u] = needed[in.hinges[h].v] = 1;
-  const std::vector<SlotPair> none(in.hinges.size(), SlotPair::UpDown);
+  // A patch whole with every slot the search starts from is whole with any one of them
+  // (one slot cuts less, and bounds its end where all do): where both patches of a hinge
+  // are, its first slot pair passes, and most hinges need no test of their own.
+  const std::vector<SlotPair> first(in.hinges.size(), params.uUp ? SlotPair::UpDown : SlotPair::DownUp);
   std::vector<std::vector<PatchHinge>> base(n);
-  std::vector<std::unique_ptr<SlotCutter>> cutters(n);
+  std::vector<std::shared_ptr<const SlotCutter>> cutters(n);
+  const auto key = [&](int p) { return std::make_pair(in.patches[p].family == Family::U ? 0 : 1, in.patches[p].cylinder); };
+  if (cache)
+    for (int p = 0; p < n; ++p) {
+      const auto it = cache->find(key(p));
+      if (needed[p] && in.patches[p].cylinder >= 0 && it != cache->end()) cutters[p] = it->second;
+    }
+  std::vector<char> whole(n, 0);
   parallelFor(static_cast<size_t>(n), [&](size_t p) {
     if (!needed[p]) return;
-    base[p] = patchHinges(in, none, static_cast<int>(p));
+    base[p] = patchHinges(in, first, static_cast<int>(p));
+    if (!cutters[p]) cutters[p] = std::make_shared<SlotCutter>(in.patches[p].shape, params, in.tolerance);
+    int pieces = 1;
+    cutters[p]->cut(slotRegion(planSlots(in.patches[p].shape, base[p], params), params), &pieces);
+    whole[p] = pieces == 1;
     for (PatchHinge& h : base[p]) h.slot = Slot::None;
-    cutters[p] = std::make_unique<SlotCutter>(in.patches[p].shape, params, in.tolerance);
   });
+  if (cache)
+    for (int p = 0; p < n; ++p)
+      if (needed[p] && in.patches[p].cylinder >= 0) cache->emplace(key(p), cutters[p]);
   // The position of hinge h in its patch's list (patchHinges keeps the hinges' order).
   std::vector<int> indexIn(2 * in.hinges.size(), -1);
   std::vector<int> count(n, 0);
@@ -65,6 +81,7 @@ std::vector<int> grazingHinges(const RealizationInput& in, const SlotParams& par
   parallelFor(hinges.size(), [&](size_t i) {
     const int h = hinges[i];
     const ScaffoldHinge& hinge = in.hinges[h];
+    if (whole[hinge.u] && whole[hinge.v]) return;
     const int iu = indexIn[2 * h], iv = indexIn[2 * h + 1];
     const bool upDown = !splits(hinge.u, iu, Slot::Up) && !splits(hinge.v, iv, Slot::Down);
     const bool downUp = !upDown && !splits(hinge.u, iu, Slot::Down) && !splits(hinge.v, iv, Slot::Up);
@@ -93,7 +110,8 @@ GrazeRepair avoidGrazes(Arrangement& a, const SlotParams& params, double toleran
     in.tolerance = tolerance;
     return in;
   };
-  std::vector<int> found = grazingHinges(inputOf(a.scaffold), params);
+  CutterCache cutters;
+  std::vector<int> found = grazingHinges(inputOf(a.scaffold), params, {}, &cutters);
   g.found = static_cast<int>(found.size());
   std::set<HingeKey> bad;
   for (const int h : found) bad.insert(keyOf(a.scaffold.hinges[h]));
@@ -128,7 +146,7 @@ GrazeRepair avoidGrazes(Arrangement& a, const SlotParams& params, double toleran
                        trial.patches[k].slice + delta))
           continue;
         if (!certifyScaffold(trial).stable) continue;
-        const std::vector<int> now = grazingHinges(inputOf(trial), params, hingesOf(trial, k));
+        const std::vector<int> now = grazingHinges(inputOf(trial), params, hingesOf(trial, k), &cutters);
         if (static_cast<int>(now.size()) >= before) continue;
         // Hinges of k are new; the others keep their keys (the patch indices stay).
         for (auto it = bad.begin(); it != bad.end();)

@@ -15,6 +15,9 @@
 // smaller patch of the two is taken out if the scaffold stays certified without it.
 #pragma once
 
+#include <map>
+#include <memory>
+#include <utility>
 #include <vector>
 
 #include "arrangement/arrange.hpp"
@@ -22,9 +25,13 @@
 
 namespace sliceform {
 
+// Slot cutters by (family, cylinder): a cutter depends on the patch's shape alone, and the
+// graze tests of one design ask for the same ones again and again.
+using CutterCache = std::map<std::pair<int, int>, std::shared_ptr<const SlotCutter>>;
+
 // Indices of the grazing hinges among `hinges` (all of input's when empty).
 std::vector<int> grazingHinges(const RealizationInput& input, const SlotParams& params,
-                               const std::vector<int>& hinges = {});
+                               const std::vector<int>& hinges = {}, CutterCache* cutters = nullptr);
 
 struct GrazeRepair {
   int found = 0;      // grazing hinges before
