@@ -273,7 +273,8 @@ void bindDesign(py::module_& m) {
       "Designs a sliceform. `source`: {'brep': BREP string} or {'points': [(x, y, z)], "
       "'triangles': [(i, j, k)]}, with an optional 'name' for messages. `params`: the design "
       "command's options by name (u, v, slices, interval, tau_a, tau_m, scheme, "
-      "min_hinge_length, min_slot_edge_distance, max_spacing, min_spacing, time_limit, thickness, clearance, kerf, "
+      "min_hinge_length, min_slot_edge_distance, max_spacing, min_spacing, time_limit, thickness, clearance, "
+      "kerf, "
       "slot_end, u_slots, sheet, margin, spacing, rotate, size, height). `progress(stage)` is "
       "called before each stage; returning False cancels the run (Error 'cancelled').");
 }

@@ -73,12 +73,13 @@ struct DesignOptions : ModelOptions {
 
 void printRealization(const Design& d, const DesignParams& params) {
   const Realization& r = d.realization;
-  std::printf("grazes     %d hinge(s) no slot could cut without splitting a patch; %d patch(es) moved by a slice "
-              "or two, %d taken out; %d left\n",
-              d.grazes.found, d.grazes.moved, d.grazes.dropped, d.grazes.remaining);
+  std::printf(
+      "grazes     %d hinge(s) no slot could cut without splitting a patch; %d patch(es) moved by a slice "
+      "or two, %d taken out; %d left\n",
+      d.grazes.found, d.grazes.moved, d.grazes.dropped, d.grazes.remaining);
   if (d.grazes.splitMoved + d.grazes.splitDropped > 0)
-    std::printf("resplit    %d patch(es) the slot search left split moved, %d taken out\n", d.grazes.splitMoved,
-                d.grazes.splitDropped);
+    std::printf("resplit    %d patch(es) the slot search left split moved, %d taken out\n",
+                d.grazes.splitMoved, d.grazes.splitDropped);
   std::printf("interlocks %d found, %d repaired, %d remaining; %d cut-through(s); %d split patch(es)\n",
               r.interlocks.found, r.interlocks.repaired, d.emitted.interlocks, r.interlocks.cutThroughs,
               d.emitted.splitPatches);
@@ -87,12 +88,14 @@ void printRealization(const Design& d, const DesignParams& params) {
   std::printf("slots      %.2f mm wide; smallest slot-to-edge distance %.2f mm; shortest hinge %.2f mm\n",
               params.slots.width(), r.minSlotEdgeDistance, r.shortestHinge);
   if (d.emitted.closest.first >= 0)
-    std::printf("spacing    closest stacked patches %.2f mm apart (%s, %s), %.2f mm of paper between their "
-                "slots (rule: %.2f mm apart)\n",
-                d.emitted.minPatchSpacing, patchId(d.arrangement.scaffold, d.emitted.closest.first).c_str(),
-                patchId(d.arrangement.scaffold, d.emitted.closest.second).c_str(),
-                d.emitted.minPatchSpacing - params.slots.width(), d.arrangement.minSpacing);
-  std::printf("collisions %zu U/V pair(s) overlapping along their common line\n", d.emitted.collisions.size());
+    std::printf(
+        "spacing    closest stacked patches %.2f mm apart (%s, %s), %.2f mm of paper between their "
+        "slots (rule: %.2f mm apart)\n",
+        d.emitted.minPatchSpacing, patchId(d.arrangement.scaffold, d.emitted.closest.first).c_str(),
+        patchId(d.arrangement.scaffold, d.emitted.closest.second).c_str(),
+        d.emitted.minPatchSpacing - params.slots.width(), d.arrangement.minSpacing);
+  std::printf("collisions %zu U/V pair(s) overlapping along their common line\n",
+              d.emitted.collisions.size());
   int exact = 0;
   for (const PatchFace& p : d.patches) exact += p.exact ? 1 : 0;
   std::printf("exact      %d of %zu patches from the BRep's exact sections, the others polygons", exact,
@@ -130,8 +133,8 @@ void printLayout(const SheetLayout& l) {
   std::printf("sheets     %d %s (%.0f x %.0f mm), %.0f %% used; shelf layout would take %d (%.0f %%)\n",
               l.packing.sheets, l.sheet.name.c_str(), l.sheet.width, l.sheet.height,
               100 * l.packing.utilisation, l.shelf.sheets, 100 * l.shelf.utilisation);
-  std::printf("labels     %zu patch ids, %d partner ids at slots; partner_labels_missing %d", l.patches.size(),
-              partners, missing);
+  std::printf("labels     %zu patch ids, %d partner ids at slots; partner_labels_missing %d",
+              l.patches.size(), partners, missing);
   if (missing > 0) std::printf(" (no room to read as the slot's on %s)", without.c_str());
   std::printf("\n");
 }
@@ -317,8 +320,9 @@ Run addDesignCommand(CLI::App& app) {
   cmd->add_option("--max-spacing", o->params.arrangement.stabilize.maxSpacing,
                   "mm; add patches in long cylinders so none is farther apart (0: off)")
       ->capture_default_str();
-  cmd->add_option("--time-limit", o->params.timeLimit,
-                  "seconds the design may take before its searches stop with the best found (exit 1); 0: none")
+  cmd->add_option(
+         "--time-limit", o->params.timeLimit,
+         "seconds the design may take before its searches stop with the best found (exit 1); 0: none")
       ->capture_default_str();
   cmd->add_option("--min-spacing", o->params.arrangement.stabilize.minSpacing,
                   "mm between two patches of one family that overlap seen along their normal, so paper "

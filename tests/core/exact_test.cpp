@@ -17,9 +17,9 @@
 #include "exact/patch_faces.hpp"
 #include "geometry/simplify.hpp"
 #include "realization/realize.hpp"
-#include "verify/emitted.hpp"
 #include "support/error.hpp"
 #include "test_support.hpp"
+#include "verify/emitted.hpp"
 
 namespace sliceform {
 namespace {
@@ -50,7 +50,8 @@ void expectBuildable(const TopoDS_Shape& shape) {
     EXPECT_EQ(f.pieces, 1);
     outlines.push_back(f.outline);
   }
-  const Emitted e = checkEmitted(realizationInput(d.arrangement, d.model.meshDeflection), outlines, SlotParams{});
+  const Emitted e =
+      checkEmitted(realizationInput(d.arrangement, d.model.meshDeflection), outlines, SlotParams{});
   EXPECT_EQ(e.interlocks, 0);
   EXPECT_EQ(e.splitPatches, 0);
   EXPECT_TRUE(e.collisions.empty());
@@ -244,7 +245,6 @@ TEST(Fold, AssemblyIsWrittenAsStepAndBrep) {
   EXPECT_THROW(writeShape(all, dir.file("a.obj")), Error);
   EXPECT_FALSE(std::filesystem::exists(dir.file("a.obj")));
 }
-
 
 }  // namespace
 }  // namespace sliceform

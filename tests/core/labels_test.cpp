@@ -35,7 +35,8 @@ Comb comb(int count, double pitch, double below) {
   Region2d::Loop outline{{0, bottom}, {60, bottom}, {60, 20}};
   for (int i = count; i-- > 0;) {
     const double x = x0 + i * pitch;
-    outline.insert(outline.end(), {{x + width / 2, 20}, {x + width / 2, 10}, {x - width / 2, 10}, {x - width / 2, 20}});
+    outline.insert(outline.end(),
+                   {{x + width / 2, 20}, {x + width / 2, 10}, {x - width / 2, 10}, {x - width / 2, 20}});
   }
   outline.push_back({0, 20});
   Comb c{Region2d::fromLoops({outline}), {}};
@@ -54,7 +55,8 @@ void expectEveryLabelFitsItsSlot(const Comb& c, const std::vector<Label>& labels
     EXPECT_TRUE(boxOf(l).subtract(clear).empty()) << l.text << " at " << l.at.x << ", " << l.at.y;
     EXPECT_TRUE(boxOf(l).intersect(boxOf(name)).empty()) << l.text;
     for (size_t j = 0; j < i; ++j)
-      EXPECT_TRUE(boxOf(l).offset(0.59).intersect(boxOf(labels[j])).empty()) << l.text << " on " << labels[j].text;
+      EXPECT_TRUE(boxOf(l).offset(0.59).intersect(boxOf(labels[j])).empty())
+          << l.text << " on " << labels[j].text;
     // No other slot is nearer than its own: whoever assembles reads it as this slot's.
     for (const LabelSpot& other : c.spots) {
       if (other.text == l.text) continue;

@@ -274,8 +274,9 @@ TEST(Arrange, MaxSpacingAddsHeldPatches) {
 TopoDS_Shape comb() {
   TopoDS_Shape shape = BRepPrimAPI_MakeBox(gp_Pnt(0, 0, 0), gp_Pnt(100, 40, 20)).Shape();
   for (int k = 0; k < 50; ++k)
-    shape = BRepAlgoAPI_Fuse(shape, BRepPrimAPI_MakeBox(gp_Pnt(2 * k, 0, 20), gp_Pnt(2 * k + 1, 40, 60)).Shape())
-                .Shape();
+    shape =
+        BRepAlgoAPI_Fuse(shape, BRepPrimAPI_MakeBox(gp_Pnt(2 * k, 0, 20), gp_Pnt(2 * k + 1, 40, 60)).Shape())
+            .Shape();
   return shape;
 }
 

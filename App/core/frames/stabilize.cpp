@@ -92,7 +92,8 @@ class Builder {
   bool spaced(const Candidate& c) const {
     for (const ScaffoldPatch& q : scaffold.patches) {
       if (q.family != c.family || q.slice == c.slice) continue;
-      if (std::fabs(q.position - pos(c)) < minSpacing_ + kSpacingSlack && stacked(c.family, c.cylinder, q.cylinder))
+      if (std::fabs(q.position - pos(c)) < minSpacing_ + kSpacingSlack &&
+          stacked(c.family, c.cylinder, q.cylinder))
         return false;
     }
     return true;

@@ -51,8 +51,8 @@ void dropPatch(Scaffold& scaffold, const HingeTable& table, int k);
 // Moves patch k to another slice of its cylinder and finds the hinges again; false, and
 // the scaffold unchanged, when the slice is outside the cylinder, taken, or closer than
 // minSpacing to a stacked patch. Stability is the caller's to check.
-bool movePatch(Scaffold& scaffold, const SliceSet& u, const SliceSet& v, const std::vector<Cylinder>& uCylinders,
-               const std::vector<Cylinder>& vCylinders, const HingeTable& table, double minSpacing, int k,
-               int slice);
+bool movePatch(Scaffold& scaffold, const SliceSet& u, const SliceSet& v,
+               const std::vector<Cylinder>& uCylinders, const std::vector<Cylinder>& vCylinders,
+               const HingeTable& table, double minSpacing, int k, int slice);
 
 }  // namespace sliceform

@@ -29,7 +29,7 @@ struct LabelSpot {
   Interval w;        // the hinge segment along it
   double y = 0;      // preferred height: beside the middle of the slot
   double slotWidth = 0;
-  Interval slot;     // the slot's stretch of the line (a point, the root, where none is cut)
+  Interval slot;  // the slot's stretch of the line (a point, the root, where none is cut)
 };
 
 // Where a label's box may lie on a patch: its paper less a margin along every cut. Both

@@ -26,7 +26,8 @@ enum class Way { Across, Along, OnLine };
 // legible minimum.
 std::vector<double> heightsFrom(double maxHeight) {
   std::vector<double> heights;
-  for (double h = std::min(maxHeight, kMaxPartnerHeight); h > kMinLabelHeight + 1e-9; h *= 0.8) heights.push_back(h);
+  for (double h = std::min(maxHeight, kMaxPartnerHeight); h > kMinLabelHeight + 1e-9; h *= 0.8)
+    heights.push_back(h);
   heights.push_back(kMinLabelHeight);
   return heights;
 }
@@ -40,7 +41,8 @@ bool otherLine(const LabelSpot& o, const LabelSpot& s) {
 std::vector<Box2> otherHinges(const std::vector<LabelSpot>& spots, const LabelSpot& s, Interval y) {
   std::vector<Box2> lines;
   for (const LabelSpot& o : spots)
-    if (otherLine(o, s) && o.w.hi >= y.lo && o.w.lo <= y.hi) lines.push_back({{o.x, o.w.lo}, {o.x, o.w.hi}, false});
+    if (otherLine(o, s) && o.w.hi >= y.lo && o.w.lo <= y.hi)
+      lines.push_back({{o.x, o.w.lo}, {o.x, o.w.hi}, false});
   return lines;
 }
 
@@ -70,8 +72,10 @@ Interval nearerOwn(const std::vector<LabelSpot>& spots, const LabelSpot& s, Inte
   for (const LabelSpot& o : spots) {
     if (!otherLine(o, s) || o.w.lo >= y.hi || o.w.hi <= y.lo) continue;
     const double mid = (o.x + s.x) / 2;
-    if (o.x > s.x) x.hi = std::min(x.hi, mid - 1e-3);
-    else x.lo = std::max(x.lo, mid + 1e-3);
+    if (o.x > s.x)
+      x.hi = std::min(x.hi, mid - 1e-3);
+    else
+      x.lo = std::max(x.lo, mid + 1e-3);
   }
   return x;
 }
@@ -81,7 +85,8 @@ Interval nearerOwn(const std::vector<LabelSpot>& spots, const LabelSpot& s, Inte
 // reaches the hinge's stretch, or comes within two cap heights of its ends (a short hinge
 // has little paper beside it); on the line it may lie two label lengths beyond them.
 std::optional<Label> placeAt(const Region2d& inner, const std::vector<Label>& taken,
-                             const std::vector<LabelSpot>& spots, const LabelSpot& s, Way way, double height) {
+                             const std::vector<LabelSpot>& spots, const LabelSpot& s, Way way,
+                             double height) {
   const bool vertical = way != Way::Across;
   const Vec2 half = halfSize(s.text, height, vertical);
   double reach = half.y + 2 * height, lo, hi, side = 0;
@@ -102,7 +107,8 @@ std::optional<Label> placeAt(const Region2d& inner, const std::vector<Label>& ta
     const Region2d room = freeFor(inner, taken, half, {{lo, y.lo}, {hi, y.hi}, false}, lines);
     if ((none = room.empty())) return std::nullopt;
     Vec2 at[] = {nearestPoint(room, {s.x + side, s.y}), nearestPoint(room, {s.x - side, s.y})};
-    if (std::hypot(at[1].x - s.x + side, at[1].y - s.y) < std::hypot(at[0].x - s.x - side, at[0].y - s.y) - 1e-9)
+    if (std::hypot(at[1].x - s.x + side, at[1].y - s.y) <
+        std::hypot(at[0].x - s.x - side, at[0].y - s.y) - 1e-9)
       std::swap(at[0], at[1]);
     for (const Vec2& c : at)
       if (way == Way::OnLine || readsAsOwn(spots, s, c, half)) return setLabel(s.text, c, height, vertical);
@@ -118,8 +124,8 @@ std::optional<Label> placeAt(const Region2d& inner, const std::vector<Label>& ta
 
 // The label of `s` clear of `taken`: the first way it fits, at the largest size that fits
 // that way; none when it has no room.
-std::optional<Label> partnerLabel(const Region2d& inner, const std::vector<LabelSpot>& spots, const LabelSpot& s,
-                                  const std::vector<Label>& taken, double maxHeight) {
+std::optional<Label> partnerLabel(const Region2d& inner, const std::vector<LabelSpot>& spots,
+                                  const LabelSpot& s, const std::vector<Label>& taken, double maxHeight) {
   // Where the next line is nearer than the text is long at the smallest size, a label
   // across lies over a neighbour's line, where that neighbour's label would stand turned:
   // there labels turn first.
@@ -129,7 +135,8 @@ std::optional<Label> partnerLabel(const Region2d& inner, const std::vector<Label
   for (const Way way : pitch < labelWidth(s.text, kMinLabelHeight) ? kTurnedFirst : kAcrossFirst) {
     // Turned labels side by side along close slots: no higher than the slots are apart,
     // less the gap, or the first one set pushes its neighbours' off.
-    const std::vector<double> heights = heightsFrom(way == Way::Across ? maxHeight : std::min(maxHeight, pitch - kGap));
+    const std::vector<double> heights =
+        heightsFrom(way == Way::Across ? maxHeight : std::min(maxHeight, pitch - kGap));
     const auto at = [&](double height) { return placeAt(inner, taken, spots, s, way, height); };
     // Most labels fit at the first size; where the smallest does not fit this way no other
     // does (a bigger box only loses room), so two tries rule a way out.
@@ -146,8 +153,8 @@ std::optional<Label> partnerLabel(const Region2d& inner, const std::vector<Label
 
 // The labels of `spots` set in `order`, each clear of those before it and of `taken`.
 std::vector<std::optional<Label>> partnerLabels(const Region2d& inner, const std::vector<LabelSpot>& spots,
-                                                const std::vector<size_t>& order, const std::vector<Label>& taken,
-                                                double maxHeight) {
+                                                const std::vector<size_t>& order,
+                                                const std::vector<Label>& taken, double maxHeight) {
   std::vector<std::optional<Label>> labels(spots.size());
   std::vector<Label> all = taken;
   for (const size_t i : order) {
@@ -161,8 +168,10 @@ std::vector<std::optional<Label>> partnerLabels(const Region2d& inner, const std
 std::vector<Label> present(const std::vector<std::optional<Label>>& labels, int& missing) {
   std::vector<Label> out;
   for (const std::optional<Label>& l : labels) {
-    if (l) out.push_back(*l);
-    else ++missing;
+    if (l)
+      out.push_back(*l);
+    else
+      ++missing;
   }
   return out;
 }
@@ -173,7 +182,8 @@ bool nearMissing(const std::vector<LabelSpot>& spots, const std::vector<size_t>&
   const Vec2 h = halfSize(label.text, label.height, label.vertical), c = label.at;
   for (const size_t j : order) {
     const LabelSpot& m = spots[j];
-    if (!labels[j] && c.x + h.x > m.x - r && c.x - h.x < m.x + r && c.y + h.y > m.w.lo - r && c.y - h.y < m.w.hi + r)
+    if (!labels[j] && c.x + h.x > m.x - r && c.x - h.x < m.x + r && c.y + h.y > m.w.lo - r &&
+        c.y - h.y < m.w.hi + r)
       return true;
   }
   return false;
@@ -205,7 +215,8 @@ PatchLabels labelPatch(const LabelPaper& paper, const std::string& id, const std
   int hopeless = 0;
   order.erase(std::remove_if(order.begin(), order.end(),
                              [&](size_t i) {
-                               const bool none = !partners[i] && !partnerLabel(paper.inner, spots, spots[i], {}, height);
+                               const bool none =
+                                   !partners[i] && !partnerLabel(paper.inner, spots, spots[i], {}, height);
                                hopeless += none;
                                return none;
                              }),
@@ -221,7 +232,8 @@ PatchLabels labelPatch(const LabelPaper& paper, const std::string& id, const std
     std::vector<size_t> again;
     std::vector<Label> kept;
     for (const size_t i : order) {
-      if (!partners[i] || nearMissing(spots, order, partners, *partners[i], labelWidth(spots[i].text, height)))
+      if (!partners[i] ||
+          nearMissing(spots, order, partners, *partners[i], labelWidth(spots[i].text, height)))
         again.push_back(i);
       else
         kept.push_back(*partners[i]);

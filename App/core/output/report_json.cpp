@@ -163,7 +163,8 @@ json reportJson(const Model& model, const DesignParams& params, const Design& d)
                    {"shelf_utilisation", l.shelf.utilisation}};
   // Slots without their partner's id: what whoever assembles has to work out from the 3D.
   int partners = 0, missing = 0;
-  for (const FlatPatch& p : l.patches) partners += static_cast<int>(p.partners.size()), missing += p.partnersMissing;
+  for (const FlatPatch& p : l.patches)
+    partners += static_cast<int>(p.partners.size()), missing += p.partnersMissing;
   doc["partner_labels"] = partners;
   doc["partner_labels_missing"] = missing;
   doc["cylinders"] = {{"u", a.uCylinders.size()},

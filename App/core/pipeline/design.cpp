@@ -26,7 +26,8 @@ Design runDesign(const Model& model, DesignParams params, const Progress& progre
                  const PatchesReady& patchesReady) {
   // Hinges must hold with the slot cut: the paper beside it is measured from its walls.
   checkSlotParams(params.slots);
-  if (!(params.timeLimit >= 0)) throw Error(ErrorKind::BadParameter, "the time limit must be 0 (none) or more seconds");
+  if (!(params.timeLimit >= 0))
+    throw Error(ErrorKind::BadParameter, "the time limit must be 0 (none) or more seconds");
   const Deadline deadline(params.timeLimit);
   params.arrangement.hinges.slotWidth = params.slots.width();
   Design d;
@@ -89,15 +90,16 @@ std::vector<std::string> designProblems(const Design& d) {
   const auto id = [&](int k) { return patchId(a.scaffold, k); };
   if (d.realization.timedOut || d.grazes.timedOut) {
     std::ostringstream s;
-    s << "the time limit (" << d.timeLimit << " s) ran out while " << (d.realization.timedOut ? "searching for slots" : "moving patches off grazes")
+    s << "the time limit (" << d.timeLimit << " s) ran out while "
+      << (d.realization.timedOut ? "searching for slots" : "moving patches off grazes")
       << "; this is the best design found (try a larger --time-limit, or fewer --slices)";
     out.push_back(s.str());
   }
   if (!a.certificate.stable) out.push_back("the scaffold is not stable: " + a.certificate.reason);
   if (a.certificate.stable && !d.certificate.stable) {
     std::ostringstream s;
-    s << "the slotted design is not stable (nullity " << d.certificate.nullity << "): "
-      << d.realization.lostPins << " pair(s) lost every holding hinge to the slots";
+    s << "the slotted design is not stable (nullity " << d.certificate.nullity
+      << "): " << d.realization.lostPins << " pair(s) lost every holding hinge to the slots";
     out.push_back(s.str());
   }
   // A few ids say where; the count says how many.
@@ -114,16 +116,17 @@ std::vector<std::string> designProblems(const Design& d) {
   }
   if (e.splitPatches > 0) {
     std::ostringstream s;
-    s << e.splitPatches << " patch(es) in pieces (" << where(e.split) << "): their slots leave paper narrower than "
-      << 2 * slotNeck(d.realization.params, 0) << " mm between them or to the edge (try a larger --min-spacing for "
+    s << e.splitPatches << " patch(es) in pieces (" << where(e.split)
+      << "): their slots leave paper narrower than " << 2 * slotNeck(d.realization.params, 0)
+      << " mm between them or to the edge (try a larger --min-spacing for "
       << "fewer patches farther apart, or a thinner --thickness)";
     out.push_back(s.str());
   }
   if (!e.collisions.empty()) {
     std::ostringstream s;
-    s << e.collisions.size() << " U/V pair(s) overlap along their common line with no slot between them (up to "
-      << e.worstOverlap << " mm, e.g. " << id(e.collisions.front().first) << " and "
-      << id(e.collisions.front().second) << ")";
+    s << e.collisions.size()
+      << " U/V pair(s) overlap along their common line with no slot between them (up to " << e.worstOverlap
+      << " mm, e.g. " << id(e.collisions.front().first) << " and " << id(e.collisions.front().second) << ")";
     out.push_back(s.str());
   }
   if (tooClose(e, a.minSpacing)) {

@@ -32,7 +32,7 @@ struct DesignParams {
 
 struct Design {
   Arrangement arrangement;
-  GrazeRepair grazes;              // patches moved off hinges no slot can cut
+  GrazeRepair grazes;  // patches moved off hinges no slot can cut
   Realization realization;
   std::vector<PatchFace> patches;  // exact faces at the popped-up pose
   Emitted emitted;                 // the fabrication contract, checked on the emitted outlines

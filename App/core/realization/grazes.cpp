@@ -44,7 +44,9 @@ std::vector<int> grazingHinges(const RealizationInput& in, const SlotParams& par
   const std::vector<SlotPair> first(in.hinges.size(), params.uUp ? SlotPair::UpDown : SlotPair::DownUp);
   std::vector<std::vector<PatchHinge>> base(n);
   std::vector<std::shared_ptr<const SlotCutter>> cutters(n);
-  const auto key = [&](int p) { return std::make_pair(in.patches[p].family == Family::U ? 0 : 1, in.patches[p].cylinder); };
+  const auto key = [&](int p) {
+    return std::make_pair(in.patches[p].family == Family::U ? 0 : 1, in.patches[p].cylinder);
+  };
   if (cache)
     for (int p = 0; p < n; ++p) {
       const auto it = cache->find(key(p));
@@ -96,16 +98,17 @@ std::vector<int> grazingHinges(const RealizationInput& in, const SlotParams& par
   return out;
 }
 
-GrazeRepair avoidGrazes(Arrangement& a, const SlotParams& params, double tolerance, const Deadline& deadline) {
+GrazeRepair avoidGrazes(Arrangement& a, const SlotParams& params, double tolerance,
+                        const Deadline& deadline) {
   GrazeRepair g;
   const auto inputOf = [&](const Scaffold& s) {
     RealizationInput in;
     in.uFrame = a.u.frame;
     in.vFrame = a.v.frame;
     for (const ScaffoldPatch& p : s.patches)
-      in.patches.push_back(
-          {p.family, p.position, (p.family == Family::U ? a.uCylinders : a.vCylinders)[p.cylinder].section,
-           p.cylinder});
+      in.patches.push_back({p.family, p.position,
+                            (p.family == Family::U ? a.uCylinders : a.vCylinders)[p.cylinder].section,
+                            p.cylinder});
     in.hinges = s.hinges;
     in.tolerance = tolerance;
     return in;
@@ -199,7 +202,8 @@ void repairSplits(Arrangement& a, Realization& r, GrazeRepair& g, const SlotPara
                   const Deadline& deadline) {
   const auto broken = [](const Realization& x) { return x.splitPatches + x.lostPins; };
   const auto better = [&](const Realization& x) {
-    return std::make_pair(broken(x), x.interlocks.remaining) < std::make_pair(broken(r), r.interlocks.remaining);
+    return std::make_pair(broken(x), x.interlocks.remaining) <
+           std::make_pair(broken(r), r.interlocks.remaining);
   };
   // Tries a changed scaffold: kept, with its search, when fewer patches are broken.
   // Each attempt searches the whole design again; kMaxAttempts bounds the cost where

@@ -208,10 +208,11 @@ class Search {
 
   // evaluatePatch for patches[i] with slots[i] (or slots[0] for all when `same`), both
   // cores at once, through the memo when there is one.
-  std::vector<std::shared_ptr<const PatchState>> evaluatePatches(const std::vector<int>& patches,
-                                                                  const std::vector<std::vector<SlotPair>>& slots,
-                                                                  bool same) {
-    const auto slotsFor = [&](size_t i) -> const std::vector<SlotPair>& { return same ? slots[0] : slots[i]; };
+  std::vector<std::shared_ptr<const PatchState>> evaluatePatches(
+      const std::vector<int>& patches, const std::vector<std::vector<SlotPair>>& slots, bool same) {
+    const auto slotsFor = [&](size_t i) -> const std::vector<SlotPair>& {
+      return same ? slots[0] : slots[i];
+    };
     std::vector<std::shared_ptr<const PatchState>> out(patches.size());
     std::vector<MemoKey> keys(patches.size());
     std::vector<size_t> missing;
@@ -337,7 +338,8 @@ class Search {
     for (const int p : {v.first, v.second}) {
       if (p < 0) continue;
       sum += version_[p];
-      for (const int h : hingesOf_[p]) sum += version_[in_.hinges[h].u == p ? in_.hinges[h].v : in_.hinges[h].u];
+      for (const int h : hingesOf_[p])
+        sum += version_[in_.hinges[h].u == p ? in_.hinges[h].v : in_.hinges[h].u];
     }
     return sum;
   }
@@ -540,7 +542,7 @@ class Search {
   std::vector<std::pair<int, SlotPair>> saved_;
   std::vector<SavedPatch> savedPatches_;
   std::vector<int> savedLocks_;
-  std::vector<char> meets_, savedMeets_;  // per hinge: meets(h), kept up to date by apply()
+  std::vector<char> meets_, savedMeets_;                  // per hinge: meets(h), kept up to date by apply()
   std::vector<long> version_ = std::vector<long>(n_, 0);  // per patch: accepted moves that changed it
 };
 

@@ -2,8 +2,8 @@
 #include "realization/slots.hpp"
 
 #include <algorithm>
-#include <functional>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <map>
 
@@ -343,7 +343,8 @@ int countOpenedParts(const std::vector<Part>& parts, double neck, double crumb, 
       continue;
     }
     ClipperLib::Paths together;
-    for (const size_t i : group) together.insert(together.end(), parts[i].paths.begin(), parts[i].paths.end());
+    for (const size_t i : group)
+      together.insert(together.end(), parts[i].paths.begin(), parts[i].paths.end());
     Region2d grown = Region2d::fromPaths(together, FillRule::NonZero).offset(neck);
     piece(std::move(grown));
   }
@@ -377,7 +378,8 @@ double slotNeck(const SlotParams& params, double tolerance) {
   return std::max(0.1, params.thickness / 2) + tolerance;
 }
 
-int slottedPieces(const Region2d& shape, const Region2d& slotted, const SlotParams& params, double tolerance) {
+int slottedPieces(const Region2d& shape, const Region2d& slotted, const SlotParams& params,
+                  double tolerance) {
   const double crumb = slotCrumb(params), neck = slotNeck(params, tolerance);
   int kept = 0;
   for (const Region2d& piece : slotted.components()) kept += piece.area() >= crumb ? 1 : 0;

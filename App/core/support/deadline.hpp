@@ -14,7 +14,8 @@ class Deadline {
   Deadline() = default;  // never passes
   explicit Deadline(double seconds)
       : end_(std::chrono::steady_clock::now() +
-             std::chrono::duration_cast<std::chrono::steady_clock::duration>(std::chrono::duration<double>(seconds))),
+             std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                 std::chrono::duration<double>(seconds))),
         limited_(seconds > 0),
         seconds_(seconds) {}
   bool passed() const {

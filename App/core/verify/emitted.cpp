@@ -61,7 +61,8 @@ Emitted checkEmitted(const RealizationInput& input, const std::vector<Region2d>&
   // Where each patch lies on the line of every patch of the other family.
   const auto on = [&](int p, int q) {
     const bool isU = ps[p].family == Family::U;
-    const double x = lineX(isU ? input.uFrame : input.vFrame, isU ? input.vFrame : input.uFrame, ps[q].position);
+    const double x =
+        lineX(isU ? input.uFrame : input.vFrame, isU ? input.vFrame : input.uFrame, ps[q].position);
     if (boxes[p].empty || x < boxes[p].min.x || x > boxes[p].max.x) return std::vector<Interval>{};
     return outlines[p].intervalsOnLine({x, 0}, {0, 1});
   };
@@ -92,7 +93,8 @@ Emitted checkEmitted(const RealizationInput& input, const std::vector<Region2d>&
   for (size_t j = 0; j < vs.size(); ++j) slot[vs[j]] = static_cast<int>(j);
   for (const ScaffoldHinge& h : input.hinges) {
     const size_t k = slot[h.u] * vs.size() + slot[h.v];
-    const double covered = length(intersectIntervals(onU[k], {h.w})) + length(intersectIntervals(onV[k], {h.w}));
+    const double covered =
+        length(intersectIntervals(onU[k], {h.w})) + length(intersectIntervals(onV[k], {h.w}));
     e.meets.push_back(covered >= kMeetShare * (h.w.hi - h.w.lo));
   }
 
@@ -118,7 +120,8 @@ Emitted checkEmitted(const RealizationInput& input, const std::vector<Region2d>&
   for (int a = 0; a < n; ++a) {
     for (int b = a + 1; b < n; ++b) {
       const double d = std::fabs(ps[a].position - ps[b].position);
-      if (ps[a].family != ps[b].family || d < 1e-9 || d >= closest || !boxesOverlap(boxes[a], boxes[b])) continue;
+      if (ps[a].family != ps[b].family || d < 1e-9 || d >= closest || !boxesOverlap(boxes[a], boxes[b]))
+        continue;
       if (cover[a].intersect(cover[b]).empty()) continue;
       closest = d;
       e.closest = {a, b};

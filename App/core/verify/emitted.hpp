@@ -23,11 +23,11 @@ namespace sliceform {
 struct Emitted {
   int interlocks = 0;
   int splitPatches = 0;
-  std::vector<int> split;                       // which patches those are
+  std::vector<int> split;                        // which patches those are
   std::vector<std::pair<int, int>> interlocked;  // (U-patch, V-patch) pairs whose loops link
-  std::vector<char> meets;                      // per hinge of the scaffold
-  std::vector<std::pair<int, int>> collisions;  // (U-patch, V-patch) overlapping on their line
-  double worstOverlap = 0;                      // mm, the longest such overlap
+  std::vector<char> meets;                       // per hinge of the scaffold
+  std::vector<std::pair<int, int>> collisions;   // (U-patch, V-patch) overlapping on their line
+  double worstOverlap = 0;                       // mm, the longest such overlap
   // The closest stacked pair of one family (-1, -1 when no two patches are stacked) and
   // how far apart they are, mm.
   std::pair<int, int> closest{-1, -1};
