@@ -64,9 +64,10 @@ Arrangement arrange(const Model& model, const ArrangementParams& params) {
 
   // Neighbouring cylinders must be able to hold patches the spacing rule apart.
   const double spacing = a.minSpacing = minPatchSpacing(params.stabilize, params.hinges);
-  const auto minRun = [&](double interval) { return static_cast<int>(std::ceil(spacing / interval - 1e-9)); };
-  a.uCylinders = approximateCylinders(a.reebU, Family::U, a.u.interval, params.tauA, minRun(a.u.interval));
-  a.vCylinders = approximateCylinders(a.reebV, Family::V, a.v.interval, params.tauA, minRun(a.v.interval));
+  a.uCylinders =
+      approximateCylinders(a.reebU, Family::U, a.u.interval, params.tauA, slicesApart(spacing, a.u.interval));
+  a.vCylinders =
+      approximateCylinders(a.reebV, Family::V, a.v.interval, params.tauA, slicesApart(spacing, a.v.interval));
   clock.lap("gca");
 
   a.table = std::make_shared<const HingeTable>(a.u, a.v, a.uCylinders, a.vCylinders, params.hinges);

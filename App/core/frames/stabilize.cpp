@@ -27,12 +27,13 @@ class Builder {
  public:
   Builder(const SliceSet& u, const SliceSet& v, const std::vector<Cylinder>& cu,
           const std::vector<Cylinder>& cv, const HingeTable& table, double minSpacing)
-      : u_(u), v_(v), cu_(cu), cv_(cv), table_(table), minSpacing_(minSpacing) {
-    // Slices a pitch apart are the rule apart.
-    pitch_[0] = std::max(1, static_cast<int>(std::ceil(minSpacing / u.interval - 1e-9)));
-    pitch_[1] = std::max(1, static_cast<int>(std::ceil(minSpacing / v.interval - 1e-9)));
-  }
-  int pitch_[2] = {1, 1};  // per family, U and V
+      : u_(u),
+        v_(v),
+        cu_(cu),
+        cv_(cv),
+        table_(table),
+        minSpacing_(minSpacing),
+        pitch_{slicesApart(minSpacing, u.interval), slicesApart(minSpacing, v.interval)} {}
 
   Scaffold scaffold;
 
@@ -248,12 +249,11 @@ class Builder {
   const std::vector<Cylinder>& cv_;
   const HingeTable& table_;
   double minSpacing_;
+  int pitch_[2];  // per family (U, V): slices that far apart are the rule apart
   // Whether two cylinders' outlines (holes filled) overlap seen along their family's
   // normal, by pair; filled because a patch seen through another's hole still has its
   // slots beside the other's on every partner that crosses both.
   mutable std::map<std::tuple<Family, int, int>, bool> stacked_;
-  // Positions are slice centres computed in floating point; a gap of exactly minSpacing
-  // must not pass by a rounding error.
 
   bool stacked(Family f, int a, int b) const {
     if (a > b) std::swap(a, b);
@@ -319,6 +319,10 @@ void dropPatch(Scaffold& s, const HingeTable& table, int k) {
   });
   if (!covered) (gone.family == Family::U ? s.uncoveredU : s.uncoveredV).push_back(gone.cylinder);
   findHinges(s, table);
+}
+
+int slicesApart(double spacing, double interval) {
+  return std::max(1, static_cast<int>(std::ceil(spacing / interval - 1e-9)));
 }
 
 double minPatchSpacing(const StabilizeOptions& options, const HingeRules& rules) {

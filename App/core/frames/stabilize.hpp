@@ -32,6 +32,8 @@ struct StabilizeOptions {
 // The spacing rule in force: `options.minSpacing`, or when 0, one slot width plus the
 // paper the design keeps beside any slot. Throws BadParameter for a value below that.
 double minPatchSpacing(const StabilizeOptions& options, const HingeRules& rules);
+// The fewest slices of `interval` mm that are `spacing` mm apart (at least 1).
+int slicesApart(double spacing, double interval);
 
 Scaffold stabilize(const SliceSet& u, const SliceSet& v, const std::vector<Cylinder>& uCylinders,
                    const std::vector<Cylinder>& vCylinders, const HingeTable& table,

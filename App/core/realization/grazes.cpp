@@ -14,10 +14,10 @@
 namespace sliceform {
 namespace {
 
-// How far a patch may move off a graze, in slices each way. One or two slices removed
-// every graze measured on man, bones and the dragon; further moves change the design more
-// than they help.
-constexpr int kGrazeReach = 2;
+// Where a patch may move off a graze or a split, in slices, nearest first. One or two
+// slices removed every graze measured on man, bones and the dragon; further moves change
+// the design more than they help.
+constexpr int kMoves[] = {1, -1, 2, -2};
 // Searches of the whole design repairSplits may run.
 constexpr int kMaxAttempts = 24;
 
@@ -43,28 +43,16 @@ std::vector<int> grazingHinges(const RealizationInput& in, const SlotParams& par
   // are, its first slot pair passes, and most hinges need no test of their own.
   const std::vector<SlotPair> first(in.hinges.size(), params.uUp ? SlotPair::UpDown : SlotPair::DownUp);
   std::vector<std::vector<PatchHinge>> base(n);
-  std::vector<std::shared_ptr<const SlotCutter>> cutters(n);
-  const auto key = [&](int p) {
-    return std::make_pair(in.patches[p].family == Family::U ? 0 : 1, in.patches[p].cylinder);
-  };
-  if (cache)
-    for (int p = 0; p < n; ++p) {
-      const auto it = cache->find(key(p));
-      if (needed[p] && in.patches[p].cylinder >= 0 && it != cache->end()) cutters[p] = it->second;
-    }
+  const std::vector<std::shared_ptr<const SlotCutter>> cutters = patchCutters(in, params, cache, needed);
   std::vector<char> whole(n, 0);
   parallelFor(static_cast<size_t>(n), [&](size_t p) {
     if (!needed[p]) return;
     base[p] = patchHinges(in, first, static_cast<int>(p));
-    if (!cutters[p]) cutters[p] = std::make_shared<SlotCutter>(in.patches[p].shape, params, in.tolerance);
     int pieces = 1;
     cutters[p]->cut(slotRegion(planSlots(in.patches[p].shape, base[p], params), params), &pieces);
     whole[p] = pieces == 1;
     for (PatchHinge& h : base[p]) h.slot = Slot::None;
   });
-  if (cache)
-    for (int p = 0; p < n; ++p)
-      if (needed[p] && in.patches[p].cylinder >= 0) cache->emplace(key(p), cutters[p]);
   // The position of hinge h in its patch's list (patchHinges keeps the hinges' order).
   std::vector<int> indexIn(2 * in.hinges.size(), -1);
   std::vector<int> count(n, 0);
@@ -101,18 +89,7 @@ std::vector<int> grazingHinges(const RealizationInput& in, const SlotParams& par
 GrazeRepair avoidGrazes(Arrangement& a, const SlotParams& params, double tolerance,
                         const Deadline& deadline) {
   GrazeRepair g;
-  const auto inputOf = [&](const Scaffold& s) {
-    RealizationInput in;
-    in.uFrame = a.u.frame;
-    in.vFrame = a.v.frame;
-    for (const ScaffoldPatch& p : s.patches)
-      in.patches.push_back({p.family, p.position,
-                            (p.family == Family::U ? a.uCylinders : a.vCylinders)[p.cylinder].section,
-                            p.cylinder});
-    in.hinges = s.hinges;
-    in.tolerance = tolerance;
-    return in;
-  };
+  const auto inputOf = [&](const Scaffold& s) { return realizationInput(a, s, tolerance); };
   CutterCache cutters;
   std::vector<int> found = grazingHinges(inputOf(a.scaffold), params, {}, &cutters);
   g.found = static_cast<int>(found.size());
@@ -142,8 +119,7 @@ GrazeRepair avoidGrazes(Arrangement& a, const SlotParams& params, double toleran
     // The V-patch first, then the U-patch; nearest slices first.
     for (const int k : {std::get<1>(hinge), std::get<0>(hinge)}) {
       const int before = badOf(k);
-      for (const int delta : {1, -1, 2, -2}) {
-        if (std::abs(delta) > kGrazeReach) continue;
+      for (const int delta : kMoves) {
         Scaffold trial = a.scaffold;
         if (!movePatch(trial, a.u, a.v, a.uCylinders, a.vCylinders, *a.table, a.minSpacing, k,
                        trial.patches[k].slice + delta))
@@ -242,7 +218,7 @@ void repairSplits(Arrangement& a, Realization& r, GrazeRepair& g, const SlotPara
     return same;
   };
   const auto move = [&](int k) {
-    for (const int delta : {1, -1, 2, -2}) {
+    for (const int delta : kMoves) {
       Scaffold trial = a.scaffold;
       if (movePatch(trial, a.u, a.v, a.uCylinders, a.vCylinders, *a.table, a.minSpacing, k,
                     trial.patches[k].slice + delta) &&

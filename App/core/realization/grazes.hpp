@@ -10,24 +10,17 @@
 // hinge that does not hold also through/none), each patch cut with that one slot and
 // nothing else, by the search's own piece count (SlotCutter). A hinge is grazing when
 // every pair splits a patch. Then a patch of the hinge is moved within its cylinder by
-// up to kGrazeReach slices, where the spacing rule allows it and the scaffold stays
+// one or two slices (kMoves), where the spacing rule allows it and the scaffold stays
 // certified, to the first slice where none of its hinges graze. Where none does, the
 // smaller patch of the two is taken out if the scaffold stays certified without it.
 #pragma once
 
-#include <map>
-#include <memory>
-#include <utility>
 #include <vector>
 
 #include "arrangement/arrange.hpp"
 #include "realization/realize.hpp"
 
 namespace sliceform {
-
-// Slot cutters by (family, cylinder): a cutter depends on the patch's shape alone, and the
-// graze tests of one design ask for the same ones again and again.
-using CutterCache = std::map<std::pair<int, int>, std::shared_ptr<const SlotCutter>>;
 
 // Indices of the grazing hinges among `hinges` (all of input's when empty).
 std::vector<int> grazingHinges(const RealizationInput& input, const SlotParams& params,

@@ -76,7 +76,7 @@ using MemoKey = std::tuple<int, int, double, std::vector<std::tuple<double, doub
 
 class RealizeMemo {
  public:
-  std::map<std::pair<int, int>, std::shared_ptr<const SlotCutter>> cutters;  // (family, cylinder)
+  CutterCache cutters;
   std::map<MemoKey, std::shared_ptr<const PatchState>> states;
 };
 
@@ -104,16 +104,12 @@ class Search {
     // Each patch's own tools and first state depend on nothing else: both cores at once.
     cutters_.resize(n_);
     lines_.resize(n_);
-    for (int p = 0; p < n_; ++p) cutters_[p] = memoCutter(p);
+    cutters_ = patchCutters(in, params, memo_ ? &memo_->cutters : nullptr);
     parallelFor(static_cast<size_t>(n_), [&](size_t p) {
-      const Region2d& shape = in.patches[p].shape;
-      if (!cutters_[p]) cutters_[p] = std::make_shared<SlotCutter>(shape, params, in.tolerance);
       lines_[p] = std::make_unique<VerticalLines>(
-          shape, VerticalLines::slotLines(patchHinges(in_, slots_, static_cast<int>(p)), params));
+          in.patches[p].shape,
+          VerticalLines::slotLines(patchHinges(in_, slots_, static_cast<int>(p)), params));
     });
-    if (memo_)
-      for (int p = 0; p < n_; ++p)
-        if (in.patches[p].cylinder >= 0) memo_->cutters.emplace(cutterKey(p), cutters_[p]);
     locks_.assign(static_cast<size_t>(n_) * n_, 0);
     state_.resize(n_);
     std::vector<int> all(n_);
@@ -190,14 +186,6 @@ class Search {
     return st;
   }
 
-  std::pair<int, int> cutterKey(int p) const {
-    return {in_.patches[p].family == Family::U ? 0 : 1, in_.patches[p].cylinder};
-  }
-  std::shared_ptr<const SlotCutter> memoCutter(int p) const {
-    if (!memo_ || in_.patches[p].cylinder < 0) return nullptr;
-    const auto it = memo_->cutters.find(cutterKey(p));
-    return it == memo_->cutters.end() ? nullptr : it->second;
-  }
   MemoKey memoKey(int p, const std::vector<SlotPair>& slots) const {
     const PatchShape& ps = in_.patches[p];
     MemoKey key{ps.family == Family::U ? 0 : 1, ps.cylinder, ps.position, {}};
@@ -565,15 +553,43 @@ std::vector<PatchHinge> patchHinges(const RealizationInput& input, const std::ve
   return out;
 }
 
+std::vector<std::shared_ptr<const SlotCutter>> patchCutters(const RealizationInput& in,
+                                                            const SlotParams& params, CutterCache* cache,
+                                                            const std::vector<char>& needed) {
+  const size_t n = in.patches.size();
+  const auto wanted = [&](size_t p) { return needed.empty() || needed[p]; };
+  const auto key = [&](size_t p) {
+    return std::make_pair(in.patches[p].family == Family::U ? 0 : 1, in.patches[p].cylinder);
+  };
+  const auto cached = [&](size_t p) { return cache && in.patches[p].cylinder >= 0; };
+  std::vector<std::shared_ptr<const SlotCutter>> out(n);
+  for (size_t p = 0; p < n; ++p) {
+    if (!wanted(p) || !cached(p)) continue;
+    const auto it = cache->find(key(p));
+    if (it != cache->end()) out[p] = it->second;
+  }
+  parallelFor(n, [&](size_t p) {
+    if (wanted(p) && !out[p])
+      out[p] = std::make_shared<SlotCutter>(in.patches[p].shape, params, in.tolerance);
+  });
+  for (size_t p = 0; p < n; ++p)
+    if (wanted(p) && cached(p)) cache->emplace(key(p), out[p]);
+  return out;
+}
+
 RealizationInput realizationInput(const Arrangement& a, double tolerance) {
+  return realizationInput(a, a.scaffold, tolerance);
+}
+
+RealizationInput realizationInput(const Arrangement& a, const Scaffold& scaffold, double tolerance) {
   RealizationInput in;
   in.uFrame = a.u.frame;
   in.vFrame = a.v.frame;
-  for (const ScaffoldPatch& p : a.scaffold.patches) {
+  for (const ScaffoldPatch& p : scaffold.patches) {
     const std::vector<Cylinder>& cylinders = p.family == Family::U ? a.uCylinders : a.vCylinders;
     in.patches.push_back({p.family, p.position, cylinders[p.cylinder].section, p.cylinder});
   }
-  in.hinges = a.scaffold.hinges;
+  in.hinges = scaffold.hinges;
   in.tolerance = tolerance;
   return in;
 }

@@ -18,7 +18,9 @@
 // would take a pin from the certificate.
 #pragma once
 
+#include <map>
 #include <memory>
+#include <utility>
 #include <vector>
 
 #include "frames/scaffold.hpp"
@@ -45,6 +47,8 @@ struct RealizationInput {
 };
 // `tolerance`: the model's mesh deflection (the polygons come from its triangulation).
 RealizationInput realizationInput(const Arrangement& arrangement, double tolerance);
+// The same for another scaffold of the arrangement's cylinders (a patch moved on trial).
+RealizationInput realizationInput(const Arrangement& arrangement, const Scaffold& scaffold, double tolerance);
 
 struct InterlockStats {
   int found = 0;     // interlocked hole pairs with the default slots
@@ -69,6 +73,15 @@ struct Realization {
   bool assemblyChecked = false;    // each patch added is free of the ones placed
   bool timedOut = false;           // the deadline passed before the search ended
 };
+
+// Slot cutters by (family, cylinder): a cutter depends on the patch's shape alone, and the
+// graze tests and repeated searches of one design ask for the same ones again and again.
+using CutterCache = std::map<std::pair<int, int>, std::shared_ptr<const SlotCutter>>;
+// The cutter of each patch `needed` says (every patch when it is empty; null for the
+// others), from `cache` when it has it, else made (both cores at once) and kept there.
+std::vector<std::shared_ptr<const SlotCutter>> patchCutters(const RealizationInput& input,
+                                                            const SlotParams& params, CutterCache* cache,
+                                                            const std::vector<char>& needed = {});
 
 // What searches of one design share when it is searched again after a patch moved: each
 // cylinder's slot cutter, and each patch state by everything it depends on (cylinder,

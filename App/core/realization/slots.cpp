@@ -394,25 +394,29 @@ SlotCutter::SlotCutter(const Region2d& shape, const SlotParams& params, double t
       erodedShape_(shape.offset(-neck_)),
       shapePieces_(openedPieceCount(shape, neck_, crumb_)) {}
 
+Region2d SlotCutter::keep(const Region2d& cleared, int* kept) const {
+  std::vector<Region2d> pieces;
+  for (Region2d& piece : shape_.subtractComponents(cleared))
+    if (piece.area() >= crumb_) pieces.push_back(std::move(piece));
+  *kept = static_cast<int>(pieces.size());
+  return pieces.size() == 1 ? pieces.front() : Region2d::uniteAll(pieces);
+}
+
 Region2d SlotCutter::cut(const Region2d& slots, int* pieces) const {
-  std::vector<Region2d> kept;
-  for (Region2d& piece : shape_.subtractComponents(slots))
-    if (piece.area() >= crumb_) kept.push_back(std::move(piece));
-  const Region2d out = kept.size() == 1 ? kept.front() : Region2d::uniteAll(kept);
+  int kept = 0;
+  const Region2d out = keep(slots, &kept);
   if (!pieces) return out;
   std::vector<Region2d> slivers;
-  *pieces = countPieces(slots, static_cast<int>(kept.size()), &slivers);
+  *pieces = countPieces(slots, kept, &slivers);
   // Slivers: a strip of paper between a slot and the outline, thinner than the neck where
   // it joins the rest, tears off like a crumb falls out. Cut away with their thread, and
   // kept so when that leaves fewer pieces (rocker-arm: 0.6 mm² beside a slot leaving
   // the paper 0.3 mm from its edge).
   if (*pieces == 1 || slivers.empty()) return out;
   const Region2d cleared = slots.unite(Region2d::uniteAll(slivers).offset(neck_));
-  std::vector<Region2d> trimmedKept;
-  for (Region2d& piece : shape_.subtractComponents(cleared))
-    if (piece.area() >= crumb_) trimmedKept.push_back(std::move(piece));
-  const Region2d trimmed = trimmedKept.size() == 1 ? trimmedKept.front() : Region2d::uniteAll(trimmedKept);
-  const int trimmedPieces = countPieces(cleared, static_cast<int>(trimmedKept.size()), nullptr);
+  int trimmedKept = 0;
+  const Region2d trimmed = keep(cleared, &trimmedKept);
+  const int trimmedPieces = countPieces(cleared, trimmedKept, nullptr);
   if (trimmedPieces >= *pieces) return out;
   *pieces = trimmedPieces;
   return trimmed;

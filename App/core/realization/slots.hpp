@@ -129,6 +129,8 @@ class SlotCutter {
   static constexpr double kSliverCrumbs = 4;
 
  private:
+  // The shape less `cleared`, crumbs dropped; `kept` is set to the pieces left.
+  Region2d keep(const Region2d& cleared, int* kept) const;
   // Pieces of the shape less `slots` (`kept` of them at least a crumb) by the neck test;
   // the opened pieces smaller than kSliverCrumbs crumbs go to `slivers` when it is given.
   int countPieces(const Region2d& slots, int kept, std::vector<Region2d>* slivers) const;
