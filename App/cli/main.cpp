@@ -13,8 +13,8 @@ namespace {
 
 constexpr const char* kFooter = R"(Exit codes:
   0  success
-  1  the design cannot be built (not stable, interlocks or split patches left), or an
-     internal error (a bug: please report it with the input)
+  1  the design cannot be built (too thin for these settings, not stable, interlocks or
+     split patches left), or an internal error (a bug: please report it with the input)
   2  wrong command line
   3  the model cannot be used (unreadable, not a closed solid, ...)
   4  a parameter is out of range
@@ -30,6 +30,7 @@ int exitCode(sliceform::ErrorKind kind) {
     case sliceform::ErrorKind::Io:
       return 5;
     case sliceform::ErrorKind::Geometry:
+    case sliceform::ErrorKind::Unbuildable:
       return 1;
     case sliceform::ErrorKind::Cancelled:
       return 6;

@@ -236,7 +236,7 @@ TEST(Arrange, RefusesWhatCannotHold) {
     arrange(modelFromShape(makeSphere(30), "small ball"), params);
     FAIL() << "expected an error";
   } catch (const Error& e) {
-    EXPECT_EQ(e.kind(), ErrorKind::BadInput);
+    EXPECT_EQ(e.kind(), ErrorKind::Unbuildable);
     EXPECT_NE(std::string(e.what()).find("too thin or too small"), std::string::npos);
   }
 }

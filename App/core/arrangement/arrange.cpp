@@ -74,7 +74,7 @@ Arrangement arrange(const Model& model, const ArrangementParams& params) {
   a.scaffold = stabilize(a.u, a.v, a.uCylinders, a.vCylinders, *a.table, params.stabilize);
   clock.lap("frames");
   if (a.scaffold.patches.empty()) {
-    throw Error(ErrorKind::BadInput,
+    throw Error(ErrorKind::Unbuildable,
                 model.source +
                     ": no two U-patches and two V-patches can hold each other with hinges of at least " +
                     mm(params.hinges.minHingeLength) + " mm and " + mm(params.hinges.minSlotEdgeDistance) +

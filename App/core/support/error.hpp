@@ -13,6 +13,7 @@ enum class ErrorKind {
   BadInput,      // the model file cannot be read or is not a usable solid
   BadParameter,  // a parameter is out of range or inconsistent
   Geometry,      // a geometric operation failed on valid input (a bug or OCCT limit)
+  Unbuildable,   // a usable model that no buildable design fits at these settings
   Io,            // an output cannot be written
   Cancelled,     // the user stopped the run
 };
