@@ -46,10 +46,14 @@ Emitted checkEmitted(const RealizationInput& input, const std::vector<Region2d>&
   }
   std::set<int> failing;
 
-  // One piece each, by the slot search's own neck test against the unslotted shape.
+  // One piece each, by the slot search's own neck test against the unslotted shape, and
+  // one outer loop each, whatever its size: the search drops crumbs below a slot's area
+  // as cut-away waste, but a crumb written to the outline is a second outer loop to the
+  // independent checker and a second piece to whoever cuts it (an exact face's sliver).
   std::vector<int> pieces(n);
   parallelFor(static_cast<size_t>(n), [&](size_t p) {
-    pieces[p] = slottedPieces(ps[p].shape, outlines[p], params, input.tolerance);
+    pieces[p] = std::max(slottedPieces(ps[p].shape, outlines[p], params, input.tolerance),
+                         static_cast<int>(outlines[p].components().size()));
   });
   for (int p = 0; p < n; ++p)
     if (pieces[p] != 1) {
