@@ -305,6 +305,29 @@ TEST(Layout, PatchLargerThanTheSheetIsAClearError) {
   }
 }
 
+// A patch that fits the sheet only turned a quarter turn goes on it turned, and lies
+// inside its margins: libnest2d left a 300 x 200 mm patch off A3 (277 x 400 mm inside).
+TEST(Layout, PatchThatFitsOnlyTurnedIsTurned) {
+  const SheetSpec a3 = sheetSpec("A3", 10, 3);
+  const Region2d wide = Region2d::fromLoops({{{0, 0}, {300, 0}, {300, 200}, {0, 200}}});
+  const Region2d small = Region2d::fromLoops({{{0, 0}, {50, 0}, {50, 40}, {0, 40}}});
+  const Packing p = nestOnSheets({small, wide, wide}, {"U0", "U1", "U2"}, a3);
+  EXPECT_EQ(p.sheets, 2);
+  ASSERT_EQ(p.placements.size(), 3u);
+  // The shelf layout, the comparison in the report, turns it too.
+  const Packing shelf = shelfPack({small, wide, wide}, {"U0", "U1", "U2"}, a3);
+  for (const Packing& q : {p, shelf}) {
+    for (size_t k = 1; k < 3; ++k) {
+      EXPECT_EQ(std::lround(q.placements[k].rotation) % 180, 90) << "U" << k;
+      const Box2 b = placed(wide, q.placements[k]).bounds();
+      EXPECT_GE(b.min.x, a3.margin - 1e-6);
+      EXPECT_GE(b.min.y, a3.margin - 1e-6);
+      EXPECT_LE(b.max.x, a3.width - a3.margin + 1e-6);
+      EXPECT_LE(b.max.y, a3.height - a3.margin + 1e-6);
+    }
+  }
+}
+
 TEST(Layout, SheetNames) {
   EXPECT_EQ(sheetSpec("A3", 10, 3).height, 420);
   EXPECT_NEAR(sheetSpec("Letter", 10, 3).width, 215.9, 1e-9);

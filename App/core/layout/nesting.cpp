@@ -25,11 +25,14 @@ ClipperLib::cInt units(double mm) {
 // shapes only; given a non-convex one it places parts over each other (an L-shape test put
 // them 23 mm apart where they are 60 mm wide). Hulls are always correct; what they waste
 // inside concave patches is the price.
-ClipperLib::Path nestingContour(const Region2d& outline) {
+// `quarter`: turned a quarter turn counter-clockwise about the origin first.
+ClipperLib::Path nestingContour(const Region2d& outline, bool quarter) {
   ClipperLib::Path points;
   for (const Region2d::Loop& loop : outline.loops())
     if (Region2d::signedArea(loop) > 0)
-      for (const Vec2& p : loop) points.push_back({units(p.x), units(p.y)});
+      for (const Vec2& p : loop)
+        points.push_back(quarter ? ClipperLib::IntPoint{units(-p.y), units(p.x)}
+                                 : ClipperLib::IntPoint{units(p.x), units(p.y)});
   ClipperLib::Path path = libnest2d::shapelike::convexHull(points);
   if (!path.empty() && path.front() == path.back()) path.pop_back();
   if (path.size() < 3) throw Error(ErrorKind::Geometry, "a flattened patch has no area to nest");
@@ -44,11 +47,12 @@ double paperArea(const std::vector<Region2d>& outlines) {
   return area;
 }
 
-void checkFits(const Box2& b, const std::string& name, const SheetSpec& s) {
+// Whether the patch fits the sheet only turned a quarter turn; throws when it fits no way.
+bool fitsOnlyTurned(const Box2& b, const std::string& name, const SheetSpec& s) {
   const double w = b.max.x - b.min.x, h = b.max.y - b.min.y;
   const double W = s.width - 2 * s.margin, H = s.height - 2 * s.margin;
-  const bool fits = (w <= W && h <= H) || (s.rotate && h <= W && w <= H);
-  if (!fits) {
+  const bool upright = w <= W && h <= H, turned = s.rotate && h <= W && w <= H;
+  if (!upright && !turned) {
     char text[256];
     std::snprintf(text, sizeof text,
                   "patch %s is %.1f x %.1f mm and does not fit a %s sheet (%.0f x %.0f mm inside %.0f mm "
@@ -56,6 +60,7 @@ void checkFits(const Box2& b, const std::string& name, const SheetSpec& s) {
                   name.c_str(), w, h, s.name.c_str(), W, H, s.margin);
     throw Error(ErrorKind::BadParameter, text);
   }
+  return !upright;
 }
 
 }  // namespace
@@ -92,10 +97,14 @@ Vec2 Placement::apply(Vec2 p) const {
 Packing nestOnSheets(const std::vector<Region2d>& outlines, const std::vector<std::string>& names,
                      const SheetSpec& sheet) {
   using namespace libnest2d;
+  // A patch that fits only turned is handed over turned: libnest2d tries its rotations
+  // against the sheets it has, but sets an item that fits none of them on a new sheet as it
+  // comes, and gives up (a 300 x 200 mm patch on A3, whose 277 x 400 mm fit it turned).
   std::vector<Item> items;
+  std::vector<bool> turned(outlines.size());
   for (size_t i = 0; i < outlines.size(); ++i) {
-    checkFits(outlines[i].bounds(), names[i], sheet);
-    items.emplace_back(nestingContour(outlines[i]), ClipperLib::Paths{});
+    turned[i] = fitsOnlyTurned(outlines[i].bounds(), names[i], sheet);
+    items.emplace_back(nestingContour(outlines[i], turned[i]), ClipperLib::Paths{});
   }
   NestConfig<NfpPlacer, FirstFitSelection> config;
   config.placer_config.rotations = {0.0};
@@ -115,10 +124,11 @@ Packing nestOnSheets(const std::vector<Region2d>& outlines, const std::vector<st
 
   Packing packing;
   packing.sheets = static_cast<int>(bins);
-  for (const Item& item : items) {
+  for (size_t i = 0; i < items.size(); ++i) {
+    const Item& item = items[i];
     if (item.binId() < 0) throw Error(ErrorKind::Geometry, "libnest2d left a patch off every sheet");
     const auto t = item.translation();
-    const double degrees = std::round(static_cast<double>(item.rotation()) * 180 / Pi);
+    const double degrees = std::round(static_cast<double>(item.rotation()) * 180 / Pi) + (turned[i] ? 90 : 0);
     packing.placements.push_back({item.binId(), {t.X / kUnits, t.Y / kUnits}, std::fmod(degrees + 360, 360)});
   }
   packing.utilisation = paperArea(outlines) / (packing.sheets * sheet.width * sheet.height);
@@ -128,18 +138,20 @@ Packing nestOnSheets(const std::vector<Region2d>& outlines, const std::vector<st
 Packing shelfPack(const std::vector<Region2d>& outlines, const std::vector<std::string>& names,
                   const SheetSpec& sheet) {
   // Left to right in rows from the top, as in the paper's figures; a new row when the
-  // sheet is full across, a new sheet when it is full down. No rotation.
+  // sheet is full across, a new sheet when it is full down. Upright, but for a patch that
+  // fits the sheet only turned a quarter turn.
   Packing packing;
   packing.sheets = outlines.empty() ? 0 : 1;
   double x = sheet.margin, top = sheet.height - sheet.margin, rowHeight = 0;
   for (size_t i = 0; i < outlines.size(); ++i) {
-    const Box2 b = outlines[i].bounds();
-    checkFits(b, names[i], {sheet.name, sheet.width, sheet.height, sheet.margin, sheet.spacing, false});
+    Box2 b = outlines[i].bounds();
+    const bool turned = fitsOnlyTurned(b, names[i], sheet);
+    if (turned) b = {{-b.max.y, b.min.x}, {-b.min.y, b.max.x}, false};  // (x, y) -> (-y, x)
     const double w = b.max.x - b.min.x, h = b.max.y - b.min.y;
     if (x + w > sheet.width - sheet.margin) x = sheet.margin, top -= rowHeight + sheet.spacing, rowHeight = 0;
     if (top - h < sheet.margin)
       ++packing.sheets, x = sheet.margin, top = sheet.height - sheet.margin, rowHeight = 0;
-    packing.placements.push_back({packing.sheets - 1, {x - b.min.x, top - h - b.min.y}, 0});
+    packing.placements.push_back({packing.sheets - 1, {x - b.min.x, top - h - b.min.y}, turned ? 90.0 : 0.0});
     x += w + sheet.spacing;
     rowHeight = std::max(rowHeight, h);
   }
