@@ -1,40 +1,48 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // parallelFor: runs fn(i) for i in [0, count) on every core. The first exception thrown by
-// any call is rethrown on the calling thread once all workers have stopped.
+// any call is rethrown on the calling thread, as it was thrown, once all workers have
+// stopped; calls not yet started then do not run.
+//
+// The threads are OCCT's default pool, made once per process (inside FreeCAD, the pool
+// FreeCAD's own OCCT algorithms use), not new threads per call. A parallelFor inside
+// another one runs on the threads the outer one left free, down to the calling thread
+// alone: OSD_ThreadPool::Launcher locks only idle threads, so nesting cannot deadlock.
 #pragma once
+
+#include <OSD_ThreadPool.hxx>
 
 #include <algorithm>
 #include <atomic>
 #include <cstddef>
 #include <exception>
 #include <mutex>
-#include <thread>
-#include <vector>
 
 namespace sliceform {
 
 template <class Fn>
 void parallelFor(size_t count, Fn&& fn) {
-  std::atomic<size_t> next{0};
   std::exception_ptr failure;
   std::mutex failureMutex;
-  auto work = [&] {
-    for (size_t i; (i = next++) < count;) {
-      try {
-        fn(i);
-      } catch (...) {
-        std::lock_guard<std::mutex> lock(failureMutex);
-        if (!failure) failure = std::current_exception();
-        next = count;  // stop handing out work
-      }
+  std::atomic<bool> failed{false};
+  const auto one = [&](size_t i) {
+    if (failed) return;
+    try {
+      fn(i);
+    } catch (...) {
+      // Caught here, not by the pool: OSD_ThreadPool would turn it into a Standard_Failure
+      // and lose the core's Error and its kind.
+      std::lock_guard<std::mutex> lock(failureMutex);
+      if (!failure) failure = std::current_exception();
+      failed = true;
     }
   };
-  const size_t cores = std::max(1u, std::thread::hardware_concurrency());
-  const size_t threads = std::min(cores, count);
-  std::vector<std::thread> pool;
-  for (size_t k = 1; k < threads; ++k) pool.emplace_back(work);
-  work();
-  for (std::thread& t : pool) t.join();
+  if (count == 1) {
+    one(0);
+  } else if (count > 1) {
+    const Handle(OSD_ThreadPool)& pool = OSD_ThreadPool::DefaultPool();
+    OSD_ThreadPool::Launcher launcher(*pool, static_cast<int>(std::min<size_t>(count, pool->NbThreads())));
+    launcher.Perform(0, static_cast<int>(count), [&](int, int i) { one(static_cast<size_t>(i)); });
+  }
   if (failure) std::rethrow_exception(failure);
 }
 
