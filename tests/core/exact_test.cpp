@@ -9,11 +9,13 @@
 #include <BRepGProp.hxx>
 #include <Bnd_Box.hxx>
 #include <GProp_GProps.hxx>
+#include <STEPControl_Reader.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopoDS.hxx>
 
 #include "arrangement/arrange.hpp"
 #include "assembly/fold.hpp"
+#include "assembly/polyline_faces.hpp"
 #include "exact/patch_faces.hpp"
 #include "geometry/simplify.hpp"
 #include "realization/realize.hpp"
@@ -244,6 +246,46 @@ TEST(Fold, AssemblyIsWrittenAsStepAndBrep) {
   EXPECT_GT(std::filesystem::file_size(dir.file("a.brep")), 1000u);
   EXPECT_THROW(writeShape(all, dir.file("a.obj")), Error);
   EXPECT_FALSE(std::filesystem::exists(dir.file("a.obj")));
+}
+
+// Adaptive: the fixed Gauss points miss the corners of a degree-1 spline.
+double faceArea(const TopoDS_Shape& s) {
+  GProp_GProps props;
+  BRepGProp::SurfaceProperties(s, props, 1e-9);
+  return props.Mass();
+}
+
+// A mesh's polygon patch (a disc of 64 sides with a square hole, turned and moved as the
+// fold moves it) goes to STEP with one spline edge per loop, and reads back as the same
+// face: same area, same number of holes.
+TEST(Fold, PolygonLoopsGoToStepAsOneEdgeEach) {
+  Region2d::Loop disc, hole = {{-5, -5}, {-5, 5}, {5, 5}, {5, -5}};
+  for (int i = 0; i < 64; ++i) disc.push_back({30 * std::cos(i * M_PI / 32), 30 * std::sin(i * M_PI / 32)});
+  SliceFrame frame;
+  frame.normal = {0, 1, 0}, frame.xAxis = {0, 0, 1}, frame.yAxis = {1, 0, 0};
+  gp_Trsf moved;
+  moved.SetRotation(gp_Ax1(gp_Pnt(0, 0, 0), gp_Dir(1, 1, 0)), 0.3);
+  moved.SetTranslationPart(gp_Vec(7, -3, 11));
+  const TopoDS_Shape face = facesFromRegion(Region2d::fromLoops({disc, hole}), frame, 12).Moved(moved);
+  const double area = faceArea(face);
+  EXPECT_NEAR(area, 64 * 0.5 * 30 * 30 * std::sin(M_PI / 32) - 100, 1e-3);  // corners on 10 nm
+  const TopoDS_Shape splines = polylineLoopsAsSplines(face);
+  int edges = 0, wires = 0;
+  for (TopExp_Explorer e(splines, TopAbs_EDGE); e.More(); e.Next()) ++edges;
+  for (TopExp_Explorer w(splines, TopAbs_WIRE); w.More(); w.Next()) ++wires;
+  EXPECT_EQ(edges, 2);
+  EXPECT_EQ(wires, 2);
+  EXPECT_NEAR(faceArea(splines), area, 1e-6);
+  test::TempDir dir;
+  writeShape(face, dir.file("p.step"));
+  STEPControl_Reader reader;
+  ASSERT_EQ(reader.ReadFile(dir.file("p.step").c_str()), IFSelect_RetDone);
+  reader.TransferRoots();
+  const TopoDS_Shape back = reader.OneShape();
+  EXPECT_NEAR(faceArea(back), area, 1e-3);
+  wires = 0;
+  for (TopExp_Explorer w(back, TopAbs_WIRE); w.More(); w.Next()) ++wires;
+  EXPECT_EQ(wires, 2);
 }
 
 }  // namespace

@@ -21,6 +21,7 @@
 #include <mutex>
 #include <vector>
 
+#include "assembly/polyline_faces.hpp"
 #include "support/atomic_file.hpp"
 #include "support/error.hpp"
 #include "support/occt_guard.hpp"
@@ -97,8 +98,9 @@ void writeShape(const TopoDS_Shape& shape, const std::string& path) {
       } restore{printers, levels};
       // Planar faces keep no 2D curves, and the writer projects every edge onto its plane
       // again and again while it bounds the faces (23 s for rocker-arm's 26,000 edges). Stored
-      // once on a copy, they are looked up instead.
-      const TopoDS_Shape withCurves = BRepBuilderAPI_Copy(shape).Shape();
+      // once on a copy, they are looked up instead. A mesh's polygon loops go as one edge
+      // each: the writer's time and the file grow with the edges.
+      const TopoDS_Shape withCurves = BRepBuilderAPI_Copy(polylineLoopsAsSplines(shape)).Shape();
       for (TopExp_Explorer f(withCurves, TopAbs_FACE); f.More(); f.Next()) {
         TopTools_ListOfShape edges;
         for (TopExp_Explorer e(f.Current(), TopAbs_EDGE); e.More(); e.Next()) edges.Append(e.Current());
