@@ -19,6 +19,7 @@
 #include "cli/commands.hpp"
 #include "output/design_files.hpp"
 #include "pipeline/design.hpp"
+#include "pipeline/directions.hpp"
 #include "support/error.hpp"
 #include "support/stopwatch.hpp"
 
@@ -65,6 +66,7 @@ struct DesignOptions : ModelOptions {
   double margin = 10, spacing = 3;
   bool noRotate = false;
   std::string scheme = "both";
+  std::string directions = "given";
   std::string slotEnd = "square";
   std::string uSlots = "up";
   double foldAngle = 90;
@@ -145,6 +147,7 @@ class ProgressBar {
   explicit ProgressBar(bool show) : show_(show), start_(std::chrono::steady_clock::now()) {}
   void operator()(const char* stage) {
     if (!show_) return;
+    if (stage_ == kDesignStages) stage_ = 0;  // the next frame's design (--directions auto)
     const int width = 24, done = width * stage_++ / kDesignStages;
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
     std::fprintf(stderr, "\r\033[K[%s%s] %d/%d %s (%.0f s)", std::string(done, '#').c_str(),
@@ -170,6 +173,9 @@ Model sized(Model model, const DesignOptions& o) {
 void runDesign(DesignOptions o) {
   if (!(o.foldAngle > 0 && o.foldAngle <= 90))
     throw Error(ErrorKind::BadParameter, "the fold angle must be in (0, 90] degrees");
+  if (o.directions == "auto" && o.height != 0)
+    throw Error(ErrorKind::BadParameter,
+                "--height measures along W, which --directions auto chooses: give --size instead");
   std::vector<StageTime> readTime;
   Stopwatch clock(readTime);
   const Model model = sized(readModel(o.model), o);
@@ -188,9 +194,17 @@ void runDesign(DesignOptions o) {
   // The 3D assembly's STEP file is started as soon as the patches are final.
   std::optional<DesignFilesWriter> writer;
   if (!o.output.empty()) writer.emplace(o.output, o.foldAngle);
-  const Design d = runDesign(model, o.params, std::ref(bar), [&](const Design& partial) {
+  const auto ready = [&](const Design& partial) {
     if (writer) writer->start(partial);
-  });
+  };
+  DirectionChoice choice;
+  const Design d = o.directions == "auto" ? designInBestFrame(model, o.params, choice, std::ref(bar), ready)
+                                          : runDesign(model, o.params, std::ref(bar), ready);
+  if (choice.automatic) {
+    // From here on, as if they had been given: report.json's parameters carry them.
+    p.u = choice.trials[choice.chosen].u;
+    p.v = choice.trials[choice.chosen].v;
+  }
   bar.clear();
   const Arrangement& a = d.arrangement;
 
@@ -206,6 +220,9 @@ void runDesign(DesignOptions o) {
   if (model.edgesSplit > 0)
     std::printf("repaired   %zu edge(s) where closed parts of the mesh touch split apart\n",
                 model.edgesSplit);
+  if (choice.automatic)
+    std::printf("directions auto: %s; U %.3f,%.3f,%.3f, V %.3f,%.3f,%.3f\n", choice.why.c_str(), p.u.x, p.u.y,
+                p.u.z, p.v.x, p.v.y, p.v.z);
   std::printf("slices     %zu U, %zu V at %.3f / %.3f mm\n", a.u.slices.size(), a.v.slices.size(),
               a.u.interval, a.v.interval);
   std::printf("reeb       %zu U edges, %zu V edges\n", a.reebU.edges.size(), a.reebV.edges.size());
@@ -290,6 +307,14 @@ Run addDesignCommand(CLI::App& app) {
                   "cylinder error budget, relative to each part's volume")
       ->capture_default_str();
   cmd->add_option("--tau-m", o->params.arrangement.tauM, "Reeb branch merge threshold (weight ratio)")
+      ->capture_default_str();
+  cmd->add_option("--directions", o->directions,
+                  "given: slice along --u and --v; auto: try the model's principal axes and the file's axes, "
+                  "each up and the families turned about it, and keep the buildable frame that scores best "
+                  "(report.json lists them; 2-3 times the time of one design)")
+      ->check(CLI::IsMember({"given", "auto"}))
+      ->excludes(cmd->get_option("--u"))
+      ->excludes(cmd->get_option("--v"))
       ->capture_default_str();
   cmd->add_option("--scheme", o->scheme, "both, or u / v for one dominant direction")
       ->check(CLI::IsMember({"both", "u", "v"}))

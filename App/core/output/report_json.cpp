@@ -45,6 +45,37 @@ json label(const Label& l) {
   return {{"text", l.text}, {"at", {l.at.x, l.at.y}}, {"height_mm", l.height}, {"vertical", l.vertical}};
 }
 
+json qualityJson(const Quality& q) {
+  return {{"silhouette_iou_u", q.silhouetteIouU},
+          {"silhouette_iou_v", q.silhouetteIouV},
+          {"silhouette_iou_w", q.silhouetteIouW},
+          {"volume_iou", q.volumeIou}};
+}
+
+// Every frame tried for `--directions auto`, its estimate and, for the few designed, the
+// design; `chosen` indexes `frames`.
+json directionsJson(const DirectionChoice& c) {
+  json frames = json::array();
+  for (const FrameTrial& t : c.trials) {
+    json f = {{"name", t.name},
+              {"u", vec(t.u)},
+              {"v", vec(t.v)},
+              {"stands", t.stands},
+              {"estimate", {{"quality", qualityJson(t.estimate)}, {"patches", t.estimatePatches}}},
+              {"score", t.score},
+              {"designed", t.designed}};
+    if (!t.failure.empty()) f["failure"] = t.failure;
+    if (t.designed)
+      f["design"] = {{"buildable", t.buildable},
+                     {"quality", qualityJson(t.quality)},
+                     {"patches", t.patches},
+                     {"sheets", t.sheets},
+                     {"score", t.designScore}};
+    frames.push_back(f);
+  }
+  return {{"mode", "auto"}, {"frames", frames}, {"chosen", c.chosen}, {"why", c.why}};
+}
+
 }  // namespace
 
 json reportJson(const Model& model, const DesignParams& params, const Design& d) {
@@ -171,6 +202,7 @@ json reportJson(const Model& model, const DesignParams& params, const Design& d)
                       {"v", a.vCylinders.size()},
                       {"uncovered_u", a.scaffold.uncoveredU},
                       {"uncovered_v", a.scaffold.uncoveredV}};
+  if (d.directions.automatic) doc["directions"] = directionsJson(d.directions);
   return doc;
 }
 

@@ -15,6 +15,7 @@
 #include "arrangement/arrange.hpp"
 #include "exact/patch_faces.hpp"
 #include "layout/layout.hpp"
+#include "pipeline/frame_trials.hpp"
 #include "realization/grazes.hpp"
 #include "realization/realize.hpp"
 #include "verify/emitted.hpp"
@@ -41,6 +42,7 @@ struct Design {
   SheetLayout layout;              // flat, labelled patches nested onto sheets
   std::vector<StageTime> timings;  // every stage, the arrangement's included
   double timeLimit = 0;            // seconds the searches had (DesignParams::timeLimit)
+  DirectionChoice directions;      // the frames tried, when the directions were chosen
 };
 
 using Progress = std::function<void(const char* stage)>;

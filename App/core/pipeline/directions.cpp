@@ -1,0 +1,299 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+#include "pipeline/directions.hpp"
+
+#include <Eigen/Dense>
+
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <exception>
+
+#include "support/error.hpp"
+#include "support/parallel.hpp"
+
+namespace sliceform {
+namespace {
+
+// The objective, on an arrangement's quality: how much of the solid the patches stand for
+// (volume IoU) and how it looks from the three sides (silhouette IoU), half each; a frame
+// where the model stands on its base gets a bonus worth 0.05 of IoU (a sliceform is put on
+// a table W up). Estimates closer than kCloseScores are a tie: both are designed in full.
+constexpr double kStandsBonus = 0.05;
+constexpr double kCloseScores = 0.02;
+// A sheet more than the fewest any designed frame needs costs this much score.
+constexpr double kSheetCost = 0.01;
+// The base footprint: vertices this share of the height above the lowest.
+constexpr double kBaseSlab = 0.02;
+// Turns of the families about the up axis tried first, and then about the best axis.
+constexpr double kFirstTurns[] = {0, 45};
+constexpr double kMoreTurns[] = {15, 30, 60, 75};
+
+double score(const Quality& q, bool stands) {
+  const double silhouette = (q.silhouetteIouU + q.silhouetteIouV + q.silhouetteIouW) / 3;
+  return 0.5 * q.volumeIou + 0.5 * silhouette + (stands ? kStandsBonus : 0);
+}
+
+Eigen::Vector3d eig(const Vec3& v) {
+  return {v.x, v.y, v.z};
+}
+Vec3 vec(const Eigen::Vector3d& v) {
+  return {v.x(), v.y(), v.z()};
+}
+
+struct Mass {
+  Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+  Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();
+};
+
+// Centre of mass and covariance of the solid the closed mesh bounds, by signed tetrahedra
+// from a point near it (its bounding box's centre, for round-off).
+Mass massOf(const Mesh& mesh) {
+  const Box3 box = mesh.bounds();
+  const Eigen::Vector3d o = (eig(box.min) + eig(box.max)) / 2;
+  double volume = 0;
+  Eigen::Vector3d first = Eigen::Vector3d::Zero();
+  Eigen::Matrix3d second = Eigen::Matrix3d::Zero();
+  for (const auto& t : mesh.triangles) {
+    const Eigen::Vector3d a = eig(mesh.vertices[t[0]]) - o, b = eig(mesh.vertices[t[1]]) - o,
+                          c = eig(mesh.vertices[t[2]]) - o;
+    const double det = a.dot(b.cross(c));
+    const Eigen::Vector3d s = a + b + c;
+    volume += det / 6;
+    first += det / 24 * s;
+    second += det / 120 * (a * a.transpose() + b * b.transpose() + c * c.transpose() + s * s.transpose());
+  }
+  Mass m;
+  if (std::abs(volume) < 1e-12) return m;
+  const Eigen::Vector3d mean = first / volume;
+  m.centre = mean + o;
+  m.covariance = second / volume - mean * mean.transpose();
+  return m;
+}
+
+// Principal axes, largest spread first, each signed so that the mesh's vertices lean
+// toward its positive side (third moment): the same axes for a turned copy of the model.
+std::array<Vec3, 3> principalAxes(const Mesh& mesh, const Mass& m) {
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(m.covariance);
+  std::array<Vec3, 3> axes;
+  for (int k = 0; k < 3; ++k) {
+    const Eigen::Vector3d e = solver.eigenvectors().col(2 - k).normalized();
+    double skew = 0;
+    for (const Vec3& p : mesh.vertices) skew += std::pow((eig(p) - m.centre).dot(e), 3);
+    axes[k] = vec(skew < 0 ? -e : e);
+  }
+  return axes;
+}
+
+double cross2(const Vec2& o, const Vec2& a, const Vec2& b) {
+  return (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x);
+}
+
+// Andrew's monotone chain: the convex hull, counter-clockwise.
+std::vector<Vec2> convexHull(std::vector<Vec2> p) {
+  std::sort(p.begin(), p.end(),
+            [](const Vec2& a, const Vec2& b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
+  if (p.size() < 3) return p;
+  std::vector<Vec2> h(2 * p.size());
+  size_t k = 0;
+  for (size_t i = 0; i < p.size(); ++i) {
+    while (k >= 2 && cross2(h[k - 2], h[k - 1], p[i]) <= 0) --k;
+    h[k++] = p[i];
+  }
+  for (size_t i = p.size() - 1, t = k + 1; i-- > 0;) {
+    while (k >= t && cross2(h[k - 2], h[k - 1], p[i]) <= 0) --k;
+    h[k++] = p[i];
+  }
+  h.resize(k - 1);
+  return h;
+}
+
+// Two unit vectors completing `w` to a right-handed frame (a x b = w); `a` along `hint`
+// projected off w, or any direction when the hint lies along w.
+std::pair<Vec3, Vec3> planeOf(const Vec3& w, const Vec3& hint) {
+  Vec3 a = hint - w * dot(hint, w);
+  if (norm(a) < 1e-6) a = std::abs(w.x) < 0.9 ? Vec3{1, 0, 0} - w * w.x : Vec3{0, 1, 0} - w * w.y;
+  a = normalized(a);
+  return {a, cross(w, a)};
+}
+
+std::string degrees(double d) {
+  char text[16];
+  std::snprintf(text, sizeof text, "%g°", d);
+  return text;
+}
+
+FrameTrial turned(const std::string& axis, const Vec3& w, const Vec3& hint, double turn, bool stands) {
+  const auto [a, b] = planeOf(w, hint);
+  const double r = turn * M_PI / 180;
+  FrameTrial t;
+  t.name = axis + " up, " + degrees(turn);
+  t.u = normalized(a * std::cos(r) + b * std::sin(r));
+  t.v = normalized(cross(w, t.u));
+  t.stands = stands;
+  return t;
+}
+
+bool sameFrame(const FrameTrial& a, const FrameTrial& b) {
+  return std::abs(dot(a.u, b.u)) > 1 - 1e-9 && std::abs(dot(a.v, b.v)) > 1 - 1e-9;
+}
+
+// The arrangement at kEstimateSlices in the trial's frame, scored.
+void estimate(const Model& model, const DesignParams& params, FrameTrial& t) {
+  ArrangementParams p = params.arrangement;
+  p.u = t.u, p.v = t.v;
+  p.slices = std::min(p.slices, kEstimateSlices);
+  p.interval = 0;
+  try {
+    const Arrangement a = arrange(model, p);
+    t.estimate = a.quality;
+    t.estimatePatches = static_cast<int>(a.scaffold.patches.size());
+    t.score = a.certificate.stable ? score(a.quality, t.stands) : -1;
+    if (!a.certificate.stable) t.failure = "not stable: " + a.certificate.reason;
+  } catch (const Error& e) {
+    t.score = -1;
+    t.failure = e.what();
+  }
+}
+
+// Trials in the order they are preferred: score, then fewer patches, then as tried.
+std::vector<size_t> ranked(const std::vector<FrameTrial>& trials) {
+  std::vector<size_t> order(trials.size());
+  for (size_t k = 0; k < order.size(); ++k) order[k] = k;
+  std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) {
+    if (trials[a].score != trials[b].score) return trials[a].score > trials[b].score;
+    return trials[a].estimatePatches < trials[b].estimatePatches;
+  });
+  return order;
+}
+
+}  // namespace
+
+bool standsUp(const Mesh& mesh, const Vec3& up) {
+  if (mesh.vertices.empty()) return false;
+  const Vec3 w = normalized(up);
+  const Interval h = mesh.extent(w);
+  const auto [a, b] = planeOf(w, {1, 0, 0});
+  std::vector<Vec2> base;
+  for (const Vec3& p : mesh.vertices)
+    if (dot(p, w) <= h.lo + kBaseSlab * (h.hi - h.lo)) base.push_back({dot(p, a), dot(p, b)});
+  const std::vector<Vec2> hull = convexHull(base);
+  if (hull.size() < 3) return false;
+  const Vec3 c = vec(massOf(mesh).centre);
+  const Vec2 q{dot(c, a), dot(c, b)};
+  for (size_t i = 0; i < hull.size(); ++i)
+    if (cross2(hull[i], hull[(i + 1) % hull.size()], q) <= 0) return false;
+  return true;
+}
+
+std::vector<FrameTrial> candidateFrames(const Model& model) {
+  const Mass m = massOf(model.mesh);
+  const std::array<Vec3, 3> principal = principalAxes(model.mesh, m);
+  struct Axis {
+    std::string name;
+    Vec3 w, hint;
+  };
+  std::vector<Axis> axes;
+  for (int k = 0; k < 3; ++k)
+    axes.push_back({"principal " + std::to_string(k + 1), principal[k], principal[k == 0 ? 1 : 0]});
+  // The file's axes, the next one in turn as the families' first direction: Z up gives the
+  // default frame, U = X and V = Y.
+  const Vec3 file[3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+  const char* names[3] = {"X", "Y", "Z"};
+  for (int k = 0; k < 3; ++k) axes.push_back({names[k], file[k], file[(k + 1) % 3]});
+  std::vector<FrameTrial> out;
+  for (const Axis& axis : axes) {
+    // The sign of W that the model stands on; where both or neither, the axis as it is.
+    const bool up = standsUp(model.mesh, axis.w), down = standsUp(model.mesh, axis.w * -1.0);
+    const bool flip = down && !up;
+    const Vec3 w = flip ? axis.w * -1.0 : axis.w;
+    for (const double turn : kFirstTurns) {
+      FrameTrial t = turned((flip ? "-" : "") + axis.name, w, axis.hint, turn, up || down);
+      if (std::none_of(out.begin(), out.end(), [&](const FrameTrial& o) { return sameFrame(o, t); }))
+        out.push_back(std::move(t));
+    }
+  }
+  return out;
+}
+
+Design designInBestFrame(const Model& model, DesignParams params, DirectionChoice& choice,
+                         const Progress& progress, const PatchesReady& patchesReady) {
+  const auto start = std::chrono::steady_clock::now();
+  choice = DirectionChoice{};
+  choice.automatic = true;
+  std::vector<FrameTrial>& trials = choice.trials;
+  trials = candidateFrames(model);
+  parallelFor(trials.size(), [&](size_t k) { estimate(model, params, trials[k]); });
+  // The families turned further about the best frame's up axis.
+  const FrameTrial best = trials[ranked(trials).front()];
+  const Vec3 w = cross(best.u, best.v);
+  const std::string axis = best.name.substr(0, best.name.find(" up"));
+  const size_t first = trials.size();
+  for (const double turn : kMoreTurns) {
+    FrameTrial t = turned(axis, w, best.u, turn, best.stands);
+    if (std::none_of(trials.begin(), trials.end(), [&](const FrameTrial& o) { return sameFrame(o, t); }))
+      trials.push_back(std::move(t));
+  }
+  parallelFor(trials.size() - first, [&](size_t k) { estimate(model, params, trials[first + k]); });
+  const double estimating =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+
+  // The best in full; the runner-up too when the estimates are close or the best cannot be
+  // built. Buildable first, then the score on the full design, sheets counted.
+  const std::vector<size_t> order = ranked(trials);
+  std::vector<std::pair<size_t, Design>> designs;
+  std::exception_ptr firstFailure;
+  for (size_t r = 0; r < order.size() && r < 2; ++r) {
+    FrameTrial& t = trials[order[r]];
+    if (t.score < 0) break;
+    if (r == 1 && designs.size() == 1 && trials[designs[0].first].buildable &&
+        t.score < trials[order[0]].score - kCloseScores)
+      break;
+    DesignParams p = params;
+    p.arrangement.u = t.u, p.arrangement.v = t.v;
+    try {
+      Design d = runDesign(model, p, progress);
+      t.designed = true;
+      t.buildable = designProblems(d).empty();
+      t.quality = d.arrangement.quality;
+      t.patches = static_cast<int>(d.patches.size());
+      t.sheets = d.layout.packing.sheets;
+      designs.emplace_back(order[r], std::move(d));
+    } catch (const Error& e) {
+      t.failure = e.what();
+      if (!firstFailure) firstFailure = std::current_exception();
+    }
+  }
+  if (designs.empty()) {
+    if (firstFailure) std::rethrow_exception(firstFailure);
+    throw Error(ErrorKind::Unbuildable,
+                model.source + ": no slicing directions tried give a design: " +
+                    (trials.empty() ? std::string("none tried") : trials[order[0]].failure));
+  }
+  int fewest = designs.front().second.layout.packing.sheets;
+  for (const auto& [k, d] : designs) fewest = std::min(fewest, d.layout.packing.sheets);
+  size_t won = 0;
+  for (size_t i = 0; i < designs.size(); ++i) {
+    FrameTrial& t = trials[designs[i].first];
+    t.designScore = score(t.quality, t.stands) - kSheetCost * (t.sheets - fewest);
+    const FrameTrial& w0 = trials[designs[won].first];
+    if (i > 0 &&
+        (t.buildable > w0.buildable || (t.buildable == w0.buildable && t.designScore > w0.designScore)))
+      won = i;
+  }
+  choice.chosen = static_cast<int>(designs[won].first);
+  const FrameTrial& c = trials[choice.chosen];
+  char why[256];
+  std::snprintf(why, sizeof why, "%s: best of %zu frames (score %.3f%s), %zu designed in full%s",
+                c.name.c_str(), trials.size(), c.designScore, c.stands ? ", stands on its base" : "",
+                designs.size(), c.buildable ? "" : "; none could be built");
+  choice.why = why;
+  Design d = std::move(designs[won].second);
+  d.directions = choice;
+  d.timings.insert(d.timings.begin(), {"directions (estimates)", estimating});
+  if (patchesReady) patchesReady(d);
+  return d;
+}
+
+}  // namespace sliceform
