@@ -24,8 +24,12 @@ constexpr double kStandsBonus = 0.05;
 constexpr double kCloseScores = 0.02;
 // A sheet more than the fewest any designed frame needs costs this much score.
 constexpr double kSheetCost = 0.01;
-// The base footprint: vertices this share of the height above the lowest.
-constexpr double kBaseSlab = 0.02;
+// The base footprint: vertices this share of the height above the lowest, and their hull
+// at least this share of the model's box seen from above. A round bottom (a ball, a lamp
+// on its shade) puts a small cap in the slab, over which the centre of mass stands in an
+// unstable balance: 8.7 mm across of a 60 mm ball at 1 %, under 4 % of its box.
+constexpr double kBaseSlab = 0.01;
+constexpr double kBaseShare = 0.05;
 // Turns of the families about the up axis tried first, and then about the best axis.
 constexpr double kFirstTurns[] = {0, 45};
 constexpr double kMoreTurns[] = {15, 30, 60, 75};
@@ -124,14 +128,23 @@ std::string degrees(double d) {
   return text;
 }
 
-FrameTrial turned(const std::string& axis, const Vec3& w, const Vec3& hint, double turn, bool stands) {
-  const auto [a, b] = planeOf(w, hint);
+// An up axis: W, the direction turns start from, and whether the model stands on it.
+struct UpAxis {
+  std::string name;
+  Vec3 w, hint;
+  bool stands = false;
+};
+
+FrameTrial turned(const std::vector<UpAxis>& axes, int axis, double turn) {
+  const UpAxis& x = axes[axis];
+  const auto [a, b] = planeOf(x.w, x.hint);
   const double r = turn * M_PI / 180;
   FrameTrial t;
-  t.name = axis + " up, " + degrees(turn);
+  t.name = x.name + " up, " + degrees(turn);
   t.u = normalized(a * std::cos(r) + b * std::sin(r));
-  t.v = normalized(cross(w, t.u));
-  t.stands = stands;
+  t.v = normalized(cross(x.w, t.u));
+  t.axis = axis, t.turn = turn;
+  t.stands = x.stands;
   return t;
 }
 
@@ -180,6 +193,11 @@ bool standsUp(const Mesh& mesh, const Vec3& up) {
     if (dot(p, w) <= h.lo + kBaseSlab * (h.hi - h.lo)) base.push_back({dot(p, a), dot(p, b)});
   const std::vector<Vec2> hull = convexHull(base);
   if (hull.size() < 3) return false;
+  double hullArea = 0;
+  for (size_t i = 0; i < hull.size(); ++i)
+    hullArea += cross2({0, 0}, hull[i], hull[(i + 1) % hull.size()]) / 2;
+  const Interval ea = mesh.extent(a), eb = mesh.extent(b);
+  if (hullArea < kBaseShare * (ea.hi - ea.lo) * (eb.hi - eb.lo)) return false;
   const Vec3 c = vec(massOf(mesh).centre);
   const Vec2 q{dot(c, a), dot(c, b)};
   for (size_t i = 0; i < hull.size(); ++i)
@@ -187,33 +205,53 @@ bool standsUp(const Mesh& mesh, const Vec3& up) {
   return true;
 }
 
-std::vector<FrameTrial> candidateFrames(const Model& model) {
+namespace {
+
+// The up axes: the principal ones, then the file's that are not one of them (a model drawn
+// square to its axes has them once: so a turned copy is offered the same frames), each
+// signed the way the model stands on it, where only one way does.
+std::vector<UpAxis> upAxes(const Model& model) {
   const Mass m = massOf(model.mesh);
   const std::array<Vec3, 3> principal = principalAxes(model.mesh, m);
-  struct Axis {
-    std::string name;
-    Vec3 w, hint;
-  };
-  std::vector<Axis> axes;
+  std::vector<UpAxis> axes;
   for (int k = 0; k < 3; ++k)
     axes.push_back({"principal " + std::to_string(k + 1), principal[k], principal[k == 0 ? 1 : 0]});
   // The file's axes, the next one in turn as the families' first direction: Z up gives the
   // default frame, U = X and V = Y.
   const Vec3 file[3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
   const char* names[3] = {"X", "Y", "Z"};
-  for (int k = 0; k < 3; ++k) axes.push_back({names[k], file[k], file[(k + 1) % 3]});
-  std::vector<FrameTrial> out;
-  for (const Axis& axis : axes) {
-    // The sign of W that the model stands on; where both or neither, the axis as it is.
+  for (int k = 0; k < 3; ++k)
+    if (std::none_of(principal.begin(), principal.end(),
+                     [&](const Vec3& p) { return std::abs(dot(p, file[k])) > 1 - 1e-6; }))
+      axes.push_back({names[k], file[k], file[(k + 1) % 3]});
+  for (UpAxis& axis : axes) {
     const bool up = standsUp(model.mesh, axis.w), down = standsUp(model.mesh, axis.w * -1.0);
-    const bool flip = down && !up;
-    const Vec3 w = flip ? axis.w * -1.0 : axis.w;
-    for (const double turn : kFirstTurns) {
-      FrameTrial t = turned((flip ? "-" : "") + axis.name, w, axis.hint, turn, up || down);
-      if (std::none_of(out.begin(), out.end(), [&](const FrameTrial& o) { return sameFrame(o, t); }))
-        out.push_back(std::move(t));
-    }
+    if (down && !up) axis.w = axis.w * -1.0, axis.name = "-" + axis.name;
+    axis.stands = up || down;
   }
+  return axes;
+}
+
+std::vector<FrameTrial> framesAbout(const std::vector<UpAxis>& axes, int axis, const double* turns, size_t n,
+                                    const std::vector<FrameTrial>& tried) {
+  std::vector<FrameTrial> out;
+  for (size_t k = 0; k < n; ++k) {
+    FrameTrial t = turned(axes, axis, turns[k]);
+    const auto same = [&](const FrameTrial& o) { return sameFrame(o, t); };
+    if (std::none_of(tried.begin(), tried.end(), same) && std::none_of(out.begin(), out.end(), same))
+      out.push_back(std::move(t));
+  }
+  return out;
+}
+
+}  // namespace
+
+std::vector<FrameTrial> candidateFrames(const Model& model) {
+  const std::vector<UpAxis> axes = upAxes(model);
+  std::vector<FrameTrial> out;
+  for (int a = 0; a < static_cast<int>(axes.size()); ++a)
+    for (FrameTrial& t : framesAbout(axes, a, kFirstTurns, std::size(kFirstTurns), out))
+      out.push_back(std::move(t));
   return out;
 }
 
@@ -223,18 +261,16 @@ Design designInBestFrame(const Model& model, DesignParams params, DirectionChoic
   choice = DirectionChoice{};
   choice.automatic = true;
   std::vector<FrameTrial>& trials = choice.trials;
-  trials = candidateFrames(model);
+  const std::vector<UpAxis> axes = upAxes(model);
+  for (int a = 0; a < static_cast<int>(axes.size()); ++a)
+    for (FrameTrial& t : framesAbout(axes, a, kFirstTurns, std::size(kFirstTurns), trials))
+      trials.push_back(std::move(t));
   parallelFor(trials.size(), [&](size_t k) { estimate(model, params, trials[k]); });
   // The families turned further about the best frame's up axis.
-  const FrameTrial best = trials[ranked(trials).front()];
-  const Vec3 w = cross(best.u, best.v);
-  const std::string axis = best.name.substr(0, best.name.find(" up"));
   const size_t first = trials.size();
-  for (const double turn : kMoreTurns) {
-    FrameTrial t = turned(axis, w, best.u, turn, best.stands);
-    if (std::none_of(trials.begin(), trials.end(), [&](const FrameTrial& o) { return sameFrame(o, t); }))
-      trials.push_back(std::move(t));
-  }
+  for (FrameTrial& t :
+       framesAbout(axes, trials[ranked(trials).front()].axis, kMoreTurns, std::size(kMoreTurns), trials))
+    trials.push_back(std::move(t));
   parallelFor(trials.size() - first, [&](size_t k) { estimate(model, params, trials[first + k]); });
   const double estimating =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();

@@ -13,6 +13,8 @@ namespace sliceform {
 struct FrameTrial {
   std::string name;     // "Z up, 15°", "principal 2 up, 0°"
   Vec3 u, v;            // W = u x v is up
+  int axis = 0;         // which up axis it turns about, in the order tried
+  double turn = 0;      // degrees about it, from the axis's first direction
   bool stands = false;  // with W up, the centre of mass is above the base footprint
   // The estimate: the arrangement at a few slices.
   Quality estimate;

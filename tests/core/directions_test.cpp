@@ -1,0 +1,113 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// Slicing directions chosen for the model: the frame follows the model when it is turned,
+// a model lying on its side is stood up, and every frame tried is reported.
+#include <gtest/gtest.h>
+
+#include <BRepAlgoAPI_Fuse.hxx>
+#include <BRepBuilderAPI_Transform.hxx>
+#include <BRepPrimAPI_MakeBox.hxx>
+#include <BRepPrimAPI_MakeCylinder.hxx>
+#include <BRepPrimAPI_MakeSphere.hxx>
+#include <TopTools_ListOfShape.hxx>
+#include <gp_Trsf.hxx>
+
+#include <cmath>
+
+#include "pipeline/directions.hpp"
+#include "test_support.hpp"
+
+namespace sliceform {
+namespace {
+
+// A table: a top on four legs of different lengths' spans, so its principal axes are
+// distinct and it stands on its legs only.
+TopoDS_Shape table() {
+  TopTools_ListOfShape top, legs;
+  top.Append(BRepPrimAPI_MakeBox(gp_Pnt(0, 0, 50), gp_Pnt(120, 60, 60)).Shape());
+  for (const double x : {5.0, 105.0})
+    for (const double y : {5.0, 45.0})
+      legs.Append(BRepPrimAPI_MakeBox(gp_Pnt(x, y, 0), gp_Pnt(x + 10, y + 10, 50)).Shape());
+  BRepAlgoAPI_Fuse fuse;
+  fuse.SetArguments(top);
+  fuse.SetTools(legs);
+  fuse.Build();
+  if (!fuse.IsDone()) throw std::runtime_error("the table's Boolean failed");
+  return fuse.Shape();
+}
+
+gp_Trsf turn(const gp_Ax1& axis, double degrees) {
+  gp_Trsf t;
+  t.SetRotation(axis, degrees * M_PI / 180);
+  return t;
+}
+
+Vec3 apply(const gp_Trsf& t, const Vec3& v) {
+  gp_Vec g(v.x, v.y, v.z);
+  g.Transform(t);
+  return {g.X(), g.Y(), g.Z()};
+}
+
+DesignParams coarse() {
+  DesignParams p;
+  p.arrangement.slices = 48;
+  return p;
+}
+
+TEST(Directions, TurnedModelGetsTheSameDesignTurned) {
+  const gp_Trsf r = turn(gp_Ax1(gp_Pnt(0, 0, 0), gp_Dir(1, 2, 3)), 40);
+  DirectionChoice plain, turned;
+  const Design a = designInBestFrame(modelFromShape(table(), "table"), coarse(), plain);
+  const Design b = designInBestFrame(
+      modelFromShape(BRepBuilderAPI_Transform(table(), r).Shape(), "turned table"), coarse(), turned);
+  ASSERT_GE(plain.chosen, 0);
+  ASSERT_GE(turned.chosen, 0);
+  const FrameTrial &pa = plain.trials[plain.chosen], &pb = turned.trials[turned.chosen];
+  // The same frame, turned: each family's normal, up to its sign.
+  EXPECT_GT(std::abs(dot(apply(r, pa.u), pb.u)), 0.999) << pa.name << " / " << pb.name;
+  EXPECT_GT(std::abs(dot(apply(r, pa.v), pb.v)), 0.999) << pa.name << " / " << pb.name;
+  // And the same design.
+  EXPECT_EQ(a.patches.size(), b.patches.size());
+  EXPECT_NEAR(a.arrangement.quality.volumeIou, b.arrangement.quality.volumeIou, 0.02);
+  EXPECT_TRUE(designProblems(a).empty());
+  EXPECT_TRUE(designProblems(b).empty());
+}
+
+// A lamp: a round foot, a stem and a ball on top. It stands on its foot only: on its side
+// or on the ball it would roll.
+TopoDS_Shape lamp() {
+  TopTools_ListOfShape foot, rest;
+  foot.Append(BRepPrimAPI_MakeCylinder(40, 6).Shape());
+  rest.Append(BRepPrimAPI_MakeCylinder(gp_Ax2(gp_Pnt(0, 0, 6), gp_Dir(0, 0, 1)), 8, 60).Shape());
+  rest.Append(BRepPrimAPI_MakeSphere(gp_Pnt(0, 0, 90), 30).Shape());
+  BRepAlgoAPI_Fuse fuse;
+  fuse.SetArguments(foot);
+  fuse.SetTools(rest);
+  fuse.Build();
+  if (!fuse.IsDone()) throw std::runtime_error("the lamp's Boolean failed");
+  return fuse.Shape();
+}
+
+TEST(Directions, ModelOnItsSideIsStoodUp) {
+  // The lamp lying on its side, as a Y-up file puts it for a Z-up reader.
+  const gp_Trsf side = turn(gp_Ax1(gp_Pnt(0, 0, 0), gp_Dir(1, 0, 0)), -90);
+  const Model model = modelFromShape(BRepBuilderAPI_Transform(lamp(), side).Shape(), "lamp on its side");
+  const Vec3 footDown = apply(side, {0, 0, 1});
+  EXPECT_TRUE(standsUp(model.mesh, footDown));
+  EXPECT_FALSE(standsUp(model.mesh, footDown * -1.0));  // on the ball
+  EXPECT_FALSE(standsUp(model.mesh, {0, 0, 1}));        // on its side, as the file has it
+  DirectionChoice choice;
+  const Design d = designInBestFrame(model, coarse(), choice);
+  const FrameTrial& c = choice.trials[choice.chosen];
+  EXPECT_TRUE(c.stands);
+  EXPECT_GT(dot(cross(c.u, c.v), footDown), 0.999) << c.name;
+  // Every frame tried is there, each scored, the chosen one designed and buildable.
+  EXPECT_GE(choice.trials.size(), 8u);
+  for (const FrameTrial& t : choice.trials) EXPECT_TRUE(t.score > 0 || !t.failure.empty()) << t.name;
+  EXPECT_TRUE(c.designed);
+  EXPECT_TRUE(c.buildable);
+  EXPECT_FALSE(choice.why.empty());
+  EXPECT_TRUE(d.directions.automatic);
+}
+
+}  // namespace
+}  // namespace sliceform
