@@ -9,7 +9,10 @@
 #include <string>
 #include <vector>
 
+#include "frames/hinge_table.hpp"
+#include "frames/stabilize.hpp"
 #include "geometry/vec.hpp"
+#include "realization/slots.hpp"
 
 namespace sliceform::cli {
 
@@ -28,5 +31,9 @@ void addModelOptions(CLI::App* command, ModelOptions& options);
 
 Run addSliceCommand(CLI::App& app);
 Run addDesignCommand(CLI::App& app);
+Run addCouponCommand(CLI::App& app);
+
+// The material and slot rules, one definition for `design` and `coupon`.
+void addSlotOptions(CLI::App* command, SlotParams& slots, HingeRules& rules, StabilizeOptions& spacing);
 
 }  // namespace sliceform::cli

@@ -17,6 +17,7 @@
 #include <unistd.h>
 
 #include "cli/commands.hpp"
+#include "output/coupon.hpp"
 #include "output/design_files.hpp"
 #include "pipeline/design.hpp"
 #include "pipeline/directions.hpp"
@@ -67,6 +68,7 @@ struct DesignOptions : ModelOptions {
   bool noRotate = false;
   std::string scheme = "both";
   std::string directions = "given";
+  bool coupon = false;
   std::string slotEnd = "square";
   std::string uSlots = "up";
   double foldAngle = 90;
@@ -260,6 +262,12 @@ void runDesign(DesignOptions o) {
           big, f == Family::U ? "U" : "V");
   }
   if (!o.output.empty()) writeOutputs(model, o.params, d, o, readTime, *writer);
+  if (o.coupon && !o.output.empty()) {
+    writeCoupon(makeCoupon(o.params.slots, p.hinges.minSlotEdgeDistance, a.minSpacing), o.output);
+    std::printf(
+        "coupon     %s: coupon.pdf, .svg, .dxf, .png, .json (sliceform coupon --help says how to use it)\n",
+        o.output.c_str());
+  }
   // Never hand on a design that cannot be built silently: the files are written so the
   // problem can be looked at, and the exit code says it failed.
   const std::vector<std::string> problems = designProblems(d);
@@ -322,15 +330,9 @@ Run addDesignCommand(CLI::App& app) {
   cmd->add_option("--min-hinge-length", o->params.arrangement.hinges.minHingeLength,
                   "mm a hinge must be long to carry load")
       ->capture_default_str();
-  cmd->add_option("--min-slot-edge-distance", o->params.arrangement.hinges.minSlotEdgeDistance,
-                  "mm of paper to keep on each side of a slot")
-      ->capture_default_str();
-  cmd->add_option("--thickness", o->params.slots.thickness, "mm of material (0.3 for card, 3 for plywood)")
-      ->capture_default_str();
-  cmd->add_option("--clearance", o->params.slots.clearance, "mm added to the thickness for the slot width")
-      ->capture_default_str();
-  cmd->add_option("--kerf", o->params.slots.kerf, "mm the cutter removes; cut paths are moved out by half")
-      ->capture_default_str();
+  addSlotOptions(cmd, o->params.slots, o->params.arrangement.hinges, o->params.arrangement.stabilize);
+  cmd->add_flag("--coupon", o->coupon,
+                "also write the fit test coupon (sliceform coupon) into the output folder");
   cmd->add_option("--slot-end", o->slotEnd, "square, or round closed slot ends")
       ->check(CLI::IsMember({"square", "round"}))
       ->capture_default_str();
@@ -348,10 +350,6 @@ Run addDesignCommand(CLI::App& app) {
   cmd->add_option(
          "--time-limit", o->params.timeLimit,
          "seconds the design may take before its searches stop with the best found (exit 1); 0: none")
-      ->capture_default_str();
-  cmd->add_option("--min-spacing", o->params.arrangement.stabilize.minSpacing,
-                  "mm between two patches of one family that overlap seen along their normal, so paper "
-                  "is left between their slots (0: slot width + min slot-edge distance)")
       ->capture_default_str();
   return [o] { runDesign(*o); };
 }

@@ -48,6 +48,7 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   sliceform::cli::Run slice = sliceform::cli::addSliceCommand(app);
   sliceform::cli::Run design = sliceform::cli::addDesignCommand(app);
+  sliceform::cli::Run coupon = sliceform::cli::addCouponCommand(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -57,6 +58,7 @@ int main(int argc, char** argv) {
   try {
     if (app.got_subcommand("slice")) slice();
     if (app.got_subcommand("design")) design();
+    if (app.got_subcommand("coupon")) coupon();
     return 0;
   } catch (const sliceform::Error& e) {
     std::cerr << "sliceform: " << e.what() << "\n";

@@ -9,8 +9,9 @@
 namespace sliceform {
 namespace {
 
-// Glyphs on a 4 x 6 grid, baseline at y = 0: only what patch ids use (U, V, digits) and
-// what the sheets' scale marks say ("50 mm", "1/3"). Seven-segment shapes stay legible at 1.5 mm and engrave
+// Glyphs on a 4 x 6 grid, baseline at y = 0: only what patch ids use (U, V, digits), what
+// the sheets' scale marks say ("50 mm", "1/3") and the fit coupon's marks ("0.25", "E2.0",
+// "F2.0"). Seven-segment shapes stay legible at 1.5 mm and engrave
 // quickly.
 using Glyph = std::vector<std::vector<Vec2>>;
 const std::map<char, Glyph>& font() {
@@ -31,6 +32,9 @@ const std::map<char, Glyph>& font() {
       {'/', {{{0, 0}, {4, 6}}}},
       {'m', {{{0, 0}, {0, 4}}, {{0, 3}, {1, 4}, {2, 3}, {2, 0}}, {{2, 3}, {3, 4}, {4, 3}, {4, 0}}}},
       {'x', {{{0, 0}, {4, 4}}, {{0, 4}, {4, 0}}}},
+      {'.', {{{1.5, 0}, {2.5, 0}, {2.5, 1}, {1.5, 1}, {1.5, 0}}}},
+      {'E', {{{4, 6}, {0, 6}, {0, 0}, {4, 0}}, {{0, 3}, {3, 3}}}},
+      {'F', {{{4, 6}, {0, 6}, {0, 0}}, {{0, 3}, {3, 3}}}},
   };
   return glyphs;
 }
