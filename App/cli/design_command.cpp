@@ -123,7 +123,7 @@ void writeOutputs(const Model& model, const DesignParams& params, const Design& 
   const std::string sheetNames = sheets == 1 ? "sheet-1" : "sheet-1.." + std::to_string(sheets);
   std::printf(
       "wrote      %s: report.json, timings.json, sheets.pdf, sheets.png, %s.svg and .dxf; "
-      "assembly.step, .brep, .glb and .png at %g degrees\n",
+      "assembly.step, .brep, .glb and .png at %g degrees; instructions.pdf\n",
       o.output.c_str(), sheetNames.c_str(), o.foldAngle);
 }
 

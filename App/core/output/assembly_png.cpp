@@ -129,7 +129,12 @@ float shade(const Vec3& normal, const View& view) {
 }
 
 // Scanline fill with the even-odd rule (so holes and slots stay open), depth from the plane.
-void fillPanel(Raster& r, const Placement& pl, const Panel3& panel) {
+// Highlight: the step's new patch, flat in the highlight colour where it is seen; XRay: the
+// same patch again where other paper hides it, half blended, so a reader sees where it
+// goes inside the assembly.
+enum class Fill { Paper, Highlight, XRay };
+
+void fillPanel(Raster& r, const Placement& pl, const Panel3& panel, Fill mode = Fill::Paper) {
   const Vec3 n = normalized(panel.normal);
   const double facing = dot(n, pl.view.toViewer);
   if (std::fabs(facing) < 1e-6 || panel.loops.empty() || panel.loops[0].empty()) return;  // edge-on
@@ -176,12 +181,23 @@ void fillPanel(Raster& r, const Placement& pl, const Panel3& panel) {
       for (int col = col0; col < col1; ++col) {
         const double z = depthAt(col + 0.5, row + 0.5);
         const size_t at = size_t(row) * r.width + col;
+        const Rgb highlight{((kHighlight >> 16) & 255) / 255.0f, ((kHighlight >> 8) & 255) / 255.0f,
+                            (kHighlight & 255) / 255.0f};
+        if (mode == Fill::XRay) {
+          if (z < r.depth[at] - 1e-3)
+            for (int k = 0; k < 3; ++k) r.colour[at][k] = 0.5f * r.colour[at][k] + 0.5f * highlight[k];
+          continue;
+        }
         if (z <= r.depth[at]) continue;
         r.depth[at] = static_cast<float>(z);
         const float fade =
             static_cast<float>(kFade * (pl.nearest - z) / std::max(pl.nearest - pl.farthest, 1e-9));
-        r.colour[at] = {tone * float(paper.r) * (1 - fade) + fade, tone * float(paper.g) * (1 - fade) + fade,
-                        tone * float(paper.b) * (1 - fade) + fade};
+        if (mode == Fill::Highlight)  // flat: every pixel of it is the colour a reader looks for
+          r.colour[at] = highlight;
+        else
+          r.colour[at] = {tone * float(paper.r) * (1 - fade) + fade,
+                          tone * float(paper.g) * (1 - fade) + fade,
+                          tone * float(paper.b) * (1 - fade) + fade};
       }
     }
   }
@@ -250,6 +266,7 @@ std::vector<Panel3> assemblyPanels(const Arrangement& a, const std::vector<Patch
     const gp_Trsf pose = foldTransform(a, static_cast<int>(k), thetaDegrees);
     Panel3 panel;
     panel.family = a.scaffold.patches[k].family == Family::U ? 0 : 1;
+    panel.patch = static_cast<int>(k);
     const gp_Dir n = gp_Dir(plane.normal.x, plane.normal.y, plane.normal.z).Transformed(pose);
     panel.normal = {n.X(), n.Y(), n.Z()};
     for (const Region2d::Loop& loop : patches[k].outline.loops()) {
@@ -265,17 +282,26 @@ std::vector<Panel3> assemblyPanels(const Arrangement& a, const std::vector<Patch
   return panels;
 }
 
-Picture drawAssembly(const std::vector<Panel3>& panels, int widthPixels) {
+Picture drawAssemblyPart(const std::vector<Panel3>& panels, const std::vector<bool>& shown, int highlight,
+                         int widthPixels) {
   if (widthPixels < 16 || widthPixels > 16384)
     throw Error(ErrorKind::BadParameter, "the assembly picture must be 16 to 16384 pixels wide");
   const Placement pl = place(panels, widthPixels);
   Raster raster(pl.width, pl.height);
-  for (const Panel3& panel : panels) fillPanel(raster, pl, panel);
+  for (size_t k = 0; k < panels.size(); ++k)
+    if (shown[k])
+      fillPanel(raster, pl, panels[k], static_cast<int>(k) == highlight ? Fill::Highlight : Fill::Paper);
   // About one output pixel wide, a little more in large pictures.
   const int thickness = kSupersample * std::max(1, static_cast<int>(std::lround(widthPixels / 1000.0)));
   const double bias = 2e-3 * std::max(pl.nearest - pl.farthest, 1e-9) + thickness / pl.scale;
-  for (const Panel3& panel : panels) drawEdges(raster, pl, panel, thickness, bias);
+  for (size_t k = 0; k < panels.size(); ++k)
+    if (shown[k]) drawEdges(raster, pl, panels[k], thickness, bias);
+  if (highlight >= 0) fillPanel(raster, pl, panels[highlight], Fill::XRay);
   return downsample(raster);
+}
+
+Picture drawAssembly(const std::vector<Panel3>& panels, int widthPixels) {
+  return drawAssemblyPart(panels, std::vector<bool>(panels.size(), true), -1, widthPixels);
 }
 
 void writePicturePng(const Picture& picture, const std::string& path) {

@@ -20,6 +20,7 @@ struct Panel3 {
   std::vector<std::vector<Vec3>> loops;  // outer loops and holes (even-odd), mm
   Vec3 normal;                           // the patch plane's normal; panels are two-sided
   int family = 0;                        // 0 = U, 1 = V: two paper colours
+  int patch = -1;                        // the design's patch index
 };
 
 // The patches' outlines at fold angle theta (degrees, in (0, 90]), at the same poses as
@@ -38,6 +39,14 @@ struct Picture {
 // (at most 1.5 times the width). Throws BadParameter. Uses no cairo: it may run beside
 // the sheets' cairo surfaces without changing their ids (see design_files.cpp).
 Picture drawAssembly(const std::vector<Panel3>& panels, int widthPixels = 1200);
+
+// Only the panels `shown` (by index into `panels`), at the place and scale the whole
+// assembly would have, so pictures of a growing assembly line up; panel `highlight` in the
+// highlight colour (kHighlight), -1 for none. The assembly instructions' step pictures.
+Picture drawAssemblyPart(const std::vector<Panel3>& panels, const std::vector<bool>& shown, int highlight,
+                         int widthPixels);
+// The colour of the patch a step adds, RGB 0..255: a warm orange no paper colour comes near.
+constexpr uint32_t kHighlight = 0xE8603C;
 
 // Written atomically with cairo. Throws Io.
 void writePicturePng(const Picture& picture, const std::string& path);

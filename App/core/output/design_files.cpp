@@ -10,6 +10,7 @@
 #include "assembly/fold.hpp"
 #include "output/assembly_png.hpp"
 #include "output/gltf.hpp"
+#include "output/instructions.hpp"
 #include "output/report_json.hpp"
 #include "output/sheet_dxf.hpp"
 #include "output/sheets_cairo.hpp"
@@ -92,12 +93,14 @@ DesignFiles DesignFilesWriter::finish(const Model& model, const DesignParams& pa
   std::vector<File> work{
       {"export assembly PNG, in parallel", [&] { picture = drawAssembly(panels); }},
       {"export sheets PDF PNG SVG, in parallel",
-       [&, pdf = path("sheets.pdf"), png = path("sheets.png")] {
+       [&, pdf = path("sheets.pdf"), png = path("sheets.png"), booklet = path("instructions.pdf")] {
          writeSheetsPdf(sheets, d.layout.sheet, pdf);
          writeSheetsPng(sheets, d.layout.sheet, png);
          for (size_t k = 0; k < sheets.size(); ++k)
            writeSheetSvg(sheets[k], d.layout.sheet,
                          (dir / sheetFileName(static_cast<int>(k), ".svg")).string());
+         // After the SVGs: their bytes carry cairo's surface numbers.
+         writeInstructionsPdf(d, panels, fs::path(model.source).filename().string(), booklet);
        }},
       {"export glTF, in parallel", [&, to = path("assembly.glb")] { writeGltf(panels, to); }},
       {"export BREP, in parallel", [&, to = path("assembly.brep")] { writeShape(assembly_, to); }},
