@@ -188,7 +188,8 @@ void fillPanel(Raster& r, const Placement& pl, const Panel3& panel, Fill mode = 
             for (int k = 0; k < 3; ++k) r.colour[at][k] = 0.5f * r.colour[at][k] + 0.5f * highlight[k];
           continue;
         }
-        if (z <= r.depth[at]) continue;
+        // The highlight is filled again over itself: its own depth lets it through.
+        if (mode == Fill::Highlight ? z < r.depth[at] - 1e-6 : z <= r.depth[at]) continue;
         r.depth[at] = static_cast<float>(z);
         const float fade =
             static_cast<float>(kFade * (pl.nearest - z) / std::max(pl.nearest - pl.farthest, 1e-9));
@@ -282,26 +283,58 @@ std::vector<Panel3> assemblyPanels(const Arrangement& a, const std::vector<Patch
   return panels;
 }
 
-Picture drawAssemblyPart(const std::vector<Panel3>& panels, const std::vector<bool>& shown, int highlight,
-                         int widthPixels) {
+namespace {
+
+int edgeThickness(int widthPixels) {  // about one output pixel, a little more in large pictures
+  return kSupersample * std::max(1, static_cast<int>(std::lround(widthPixels / 1000.0)));
+}
+double edgeBias(const Placement& pl, int thickness) {
+  return 2e-3 * std::max(pl.nearest - pl.farthest, 1e-9) + thickness / pl.scale;
+}
+void checkWidth(int widthPixels) {
   if (widthPixels < 16 || widthPixels > 16384)
     throw Error(ErrorKind::BadParameter, "the assembly picture must be 16 to 16384 pixels wide");
+}
+
+}  // namespace
+
+struct GrowingAssembly::State {
+  const std::vector<Panel3>& panels;
+  Placement pl;
+  Raster built;  // every panel added so far, filled
+  std::vector<int> shown;
+  int thickness;
+  double bias;
+};
+
+GrowingAssembly::GrowingAssembly(const std::vector<Panel3>& panels, int widthPixels) {
+  checkWidth(widthPixels);
   const Placement pl = place(panels, widthPixels);
-  Raster raster(pl.width, pl.height);
-  for (size_t k = 0; k < panels.size(); ++k)
-    if (shown[k])
-      fillPanel(raster, pl, panels[k], static_cast<int>(k) == highlight ? Fill::Highlight : Fill::Paper);
-  // About one output pixel wide, a little more in large pictures.
-  const int thickness = kSupersample * std::max(1, static_cast<int>(std::lround(widthPixels / 1000.0)));
-  const double bias = 2e-3 * std::max(pl.nearest - pl.farthest, 1e-9) + thickness / pl.scale;
-  for (size_t k = 0; k < panels.size(); ++k)
-    if (shown[k]) drawEdges(raster, pl, panels[k], thickness, bias);
-  if (highlight >= 0) fillPanel(raster, pl, panels[highlight], Fill::XRay);
-  return downsample(raster);
+  const int thickness = edgeThickness(widthPixels);
+  state_.reset(new State{panels, pl, Raster(pl.width, pl.height), {}, thickness, edgeBias(pl, thickness)});
+}
+
+GrowingAssembly::~GrowingAssembly() = default;
+
+Picture GrowingAssembly::add(int panel) {
+  State& s = *state_;
+  fillPanel(s.built, s.pl, s.panels[panel]);
+  s.shown.push_back(panel);
+  Raster r = s.built;
+  fillPanel(r, s.pl, s.panels[panel], Fill::Highlight);
+  for (const int k : s.shown) drawEdges(r, s.pl, s.panels[k], s.thickness, s.bias);
+  fillPanel(r, s.pl, s.panels[panel], Fill::XRay);
+  return downsample(r);
 }
 
 Picture drawAssembly(const std::vector<Panel3>& panels, int widthPixels) {
-  return drawAssemblyPart(panels, std::vector<bool>(panels.size(), true), -1, widthPixels);
+  checkWidth(widthPixels);
+  const Placement pl = place(panels, widthPixels);
+  Raster raster(pl.width, pl.height);
+  for (const Panel3& panel : panels) fillPanel(raster, pl, panel);
+  const int thickness = edgeThickness(widthPixels);
+  for (const Panel3& panel : panels) drawEdges(raster, pl, panel, thickness, edgeBias(pl, thickness));
+  return downsample(raster);
 }
 
 void writePicturePng(const Picture& picture, const std::string& path) {

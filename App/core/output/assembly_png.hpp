@@ -6,6 +6,7 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -40,11 +41,21 @@ struct Picture {
 // the sheets' cairo surfaces without changing their ids (see design_files.cpp).
 Picture drawAssembly(const std::vector<Panel3>& panels, int widthPixels = 1200);
 
-// Only the panels `shown` (by index into `panels`), at the place and scale the whole
-// assembly would have, so pictures of a growing assembly line up; panel `highlight` in the
-// highlight colour (kHighlight), -1 for none. The assembly instructions' step pictures.
-Picture drawAssemblyPart(const std::vector<Panel3>& panels, const std::vector<bool>& shown, int highlight,
-                         int widthPixels);
+// Pictures of a growing assembly, at the place and scale the whole one has, so they line
+// up: add(k) adds panel k (an index into `panels`) to those shown and draws them with it
+// in the highlight colour (kHighlight), x-rayed where other paper hides it. Each panel is
+// filled once into a kept depth buffer; a picture costs a copy, the new panel again, and
+// the edges. The assembly instructions' step pictures.
+class GrowingAssembly {
+ public:
+  GrowingAssembly(const std::vector<Panel3>& panels, int widthPixels);
+  ~GrowingAssembly();
+  Picture add(int panel);
+
+ private:
+  struct State;
+  std::unique_ptr<State> state_;
+};
 // The colour of the patch a step adds, RGB 0..255: a warm orange no paper colour comes near.
 constexpr uint32_t kHighlight = 0xE8603C;
 

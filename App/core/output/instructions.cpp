@@ -166,7 +166,7 @@ void writeInstructionsPdf(const Design& d, const std::vector<Panel3>& panels, co
     cairo_show_page(cr);
     const double cellW = (kPageW - 2 * kMargin) / kColumns;
     const double cellH = (kPageH - 2 * kMargin) / (kStepsPerPage / kColumns);
-    std::vector<bool> shown(panels.size(), false);
+    GrowingAssembly pictures(panels, kPictureWidth);
     for (size_t i = 0; i < steps.size(); ++i) {
       const AssemblyStep& step = steps[i];
       const int slot = static_cast<int>(i % kStepsPerPage);
@@ -182,9 +182,7 @@ void writeInstructionsPdf(const Design& d, const std::vector<Panel3>& panels, co
       if (!step.partnerCuts.empty()) how += "Uncut where " + joined(step.partnerCuts) + " is cut through. ";
       line = text(cr, how, x, line, 3, cellW - 4);
       const int p = step.patch >= 0 ? panelOf[step.patch] : -1;
-      if (p >= 0) shown[p] = true;
-      const Picture picture = drawAssemblyPart(panels, shown, p, kPictureWidth);
-      drawPicture(cr, picture, x, line, cellW - 4, y + cellH - line - 3);
+      if (p >= 0) drawPicture(cr, pictures.add(p), x, line, cellW - 4, y + cellH - line - 3);
       if (slot == kStepsPerPage - 1 || i + 1 == steps.size()) cairo_show_page(cr);
     }
     cairo_destroy(cr);
