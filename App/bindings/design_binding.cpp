@@ -18,6 +18,7 @@
 #include "output/design_files.hpp"
 #include "output/report_json.hpp"
 #include "pipeline/design.hpp"
+#include "pipeline/directions.hpp"
 #include "support/error.hpp"
 
 namespace py = pybind11;
@@ -30,6 +31,7 @@ namespace {
 struct Run {
   DesignParams params;
   double size = 0, height = 0;
+  bool autoDirections = false;  // "directions": "auto" (u and v are then ignored)
 };
 
 template <typename T>
@@ -80,8 +82,15 @@ Run readParams(py::dict given) {
   take(d, "rotate", rotate);
   run.params.sheet = sheetSpec(sheet, margin, spacing);
   run.params.sheet.rotate = rotate;
+  std::string directions = "given";
+  take(d, "directions", directions);
+  if (directions != "given" && directions != "auto")
+    throw Error(ErrorKind::BadParameter, "the directions must be given or auto, not " + directions);
+  run.autoDirections = directions == "auto";
   take(d, "size", run.size);
   take(d, "height", run.height);
+  if (run.autoDirections && run.height != 0)
+    throw Error(ErrorKind::BadParameter, "height measures along W, which directions auto chooses: give size");
   if (!d.empty())
     throw Error(ErrorKind::BadParameter,
                 "unknown design parameter " + py::str(d.begin()->first).cast<std::string>());
@@ -266,7 +275,15 @@ void bindDesign(py::module_& m) {
             if (!progress(stage).cast<bool>()) throw Error(ErrorKind::Cancelled, "cancelled by the user");
           };
         py::gil_scoped_release release;
-        result->design = runDesign(result->model, result->params, report);
+        if (run.autoDirections) {
+          DirectionChoice choice;
+          result->design = designInBestFrame(result->model, result->params, choice, report);
+          // As if given: the report's parameters and everything after carry them.
+          result->params.arrangement.u = choice.trials[choice.chosen].u;
+          result->params.arrangement.v = choice.trials[choice.chosen].v;
+        } else {
+          result->design = runDesign(result->model, result->params, report);
+        }
         return result;
       },
       py::arg("source"), py::arg("params") = py::dict(), py::arg("progress") = py::none(),
@@ -275,7 +292,8 @@ void bindDesign(py::module_& m) {
       "command's options by name (u, v, slices, interval, tau_a, tau_m, scheme, "
       "min_hinge_length, min_slot_edge_distance, max_spacing, min_spacing, time_limit, thickness, clearance, "
       "kerf, "
-      "slot_end, u_slots, sheet, margin, spacing, rotate, size, height). `progress(stage)` is "
+      "slot_end, u_slots, sheet, margin, spacing, rotate, size, height, directions: given or auto). "
+      "`progress(stage)` is "
       "called before each stage; returning False cancels the run (Error 'cancelled').");
 }
 

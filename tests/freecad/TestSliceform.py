@@ -156,3 +156,30 @@ class TestSlicingInFreeCAD(unittest.TestCase):
 
 # The feature's tests live in their own file; importing the class runs them here too.
 from TestSliceformFeature import TestSliceformFeature  # noqa: E402,F401
+
+
+class TestDirectionsInTheBinding(unittest.TestCase):
+    def test_auto_directions_stand_a_lamp_up(self):
+        from sliceform_app import native
+
+        # A round foot, a stem and a ball, lying on its side (foot towards -Y).
+        lamp = Part.makeCylinder(40, 6).fuse([Part.makeCylinder(8, 60, FreeCAD.Vector(0, 0, 6)),
+                                              Part.makeSphere(30, FreeCAD.Vector(0, 0, 90))])
+        lamp.rotate(FreeCAD.Vector(0, 0, 0), FreeCAD.Vector(1, 0, 0), -90)
+        d = native().design({"brep": lamp.exportBrepToString(), "name": "lamp"},
+                            {"directions": "auto", "slices": 32})
+        import json
+
+        report = json.loads(d.report_json())
+        chosen = report["directions"]["frames"][report["directions"]["chosen"]]
+        u, v = FreeCAD.Vector(*chosen["u"]), FreeCAD.Vector(*chosen["v"])
+        up = u.cross(v)
+        self.assertGreater(up.y, 0.999, chosen["name"])  # the foot is down: W = +Y here
+        self.assertEqual(report["parameters"]["u"], chosen["u"])
+        self.assertTrue(report["verdict"]["buildable"], report["verdict"]["problems"])
+
+    def test_unknown_directions_mode_is_refused(self):
+        from sliceform_app import native
+
+        with self.assertRaises(native().Error):
+            native().design({"brep": Part.makeBox(50, 40, 30).exportBrepToString()}, {"directions": "sideways"})
