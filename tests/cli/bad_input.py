@@ -87,6 +87,8 @@ ROWS = [
     ("negative height", "ball.obj", None, ["--height", "-5"], 4, r"height must be a positive length"),
     ("absurd slice count", "ball.obj", None, ["-n", "100000000"], 4, r"slices"),
     ("directions not orthogonal", "ball.obj", None, ["--u", "1,1,0"], 4, r"must be orthogonal"),
+    ("auto directions on an open mesh", "cap.obj", obj(SV, [f for f in SF if min(SV[i - 1][2] for i in f) < 25]),
+     ["--directions", "auto"], 3, r"not closed: 48 boundary edges in 1 hole"),
     ("auto directions and --u", "ball.obj", None, ["--directions", "auto", "--u", "0,0,1"], 2, r"excludes"),
     ("auto directions and --height", "ball.obj", None, ["--directions", "auto", "--height", "50"], 4,
      r"--height measures along W, which --directions auto chooses"),

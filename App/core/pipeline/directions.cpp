@@ -152,8 +152,9 @@ bool sameFrame(const FrameTrial& a, const FrameTrial& b) {
   return std::abs(dot(a.u, b.u)) > 1 - 1e-9 && std::abs(dot(a.v, b.v)) > 1 - 1e-9;
 }
 
-// The arrangement at kEstimateSlices in the trial's frame, scored.
-void estimate(const Model& model, const DesignParams& params, FrameTrial& t) {
+// The arrangement at kEstimateSlices in the trial's frame, scored; `failure` gets what it
+// threw.
+void estimate(const Model& model, const DesignParams& params, FrameTrial& t, std::exception_ptr& failure) {
   ArrangementParams p = params.arrangement;
   p.u = t.u, p.v = t.v;
   p.slices = std::min(p.slices, kEstimateSlices);
@@ -167,6 +168,7 @@ void estimate(const Model& model, const DesignParams& params, FrameTrial& t) {
   } catch (const Error& e) {
     t.score = -1;
     t.failure = e.what();
+    failure = std::current_exception();
   }
 }
 
@@ -265,13 +267,21 @@ Design designInBestFrame(const Model& model, DesignParams params, DirectionChoic
   for (int a = 0; a < static_cast<int>(axes.size()); ++a)
     for (FrameTrial& t : framesAbout(axes, a, kFirstTurns, std::size(kFirstTurns), trials))
       trials.push_back(std::move(t));
-  parallelFor(trials.size(), [&](size_t k) { estimate(model, params, trials[k]); });
+  std::vector<std::exception_ptr> failures(trials.size());
+  parallelFor(trials.size(), [&](size_t k) { estimate(model, params, trials[k], failures[k]); });
+  // No frame at all: the model's own fault (an open mesh, too thin for the rules), said as
+  // the given frame would have said it.
+  if (std::all_of(trials.begin(), trials.end(), [](const FrameTrial& t) { return t.score < 0; }))
+    for (const std::exception_ptr& f : failures)
+      if (f) std::rethrow_exception(f);
   // The families turned further about the best frame's up axis.
   const size_t first = trials.size();
   for (FrameTrial& t :
        framesAbout(axes, trials[ranked(trials).front()].axis, kMoreTurns, std::size(kMoreTurns), trials))
     trials.push_back(std::move(t));
-  parallelFor(trials.size() - first, [&](size_t k) { estimate(model, params, trials[first + k]); });
+  failures.resize(trials.size());
+  parallelFor(trials.size() - first,
+              [&](size_t k) { estimate(model, params, trials[first + k], failures[first + k]); });
   const double estimating =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 
