@@ -1,6 +1,8 @@
 # SPDX-License-Identifier: LGPL-2.1-or-later
 """Task panel to edit a sliceform: the parameters a maker changes most, a Recompute button
-and the results. Every change is one undoable transaction; Cancel undoes it."""
+and the results. The panel is one transaction: OK commits it as one Undo step, Cancel
+aborts it, which gives back exactly the document from before the panel opened (the
+children a trial Recompute added or removed included)."""
 import FreeCAD
 import FreeCADGui
 from PySide import QtCore, QtGui
@@ -8,6 +10,7 @@ from PySide import QtCore, QtGui
 # (property, label, minimum, maximum, step, decimals) for the spin boxes
 NUMBERS = (
     ("Slices", "Slices per direction", 4, 2048, 8, 0),
+    ("Size", "Size: longest side (mm, 0 keeps the source's)", 0, 100000, 10, 1),
     ("Thickness", "Material thickness (mm)", 0.05, 20, 0.05, 2),
     ("Clearance", "Slot clearance (mm)", 0, 5, 0.05, 2),
     ("Kerf", "Cutter kerf (mm)", 0, 2, 0.01, 2),
@@ -15,6 +18,9 @@ NUMBERS = (
     ("MinSlotEdgeDistance", "Paper beside a slot (mm)", 0.2, 50, 0.5, 1),
     ("TauA", "Cylinder error budget (tauA)", 0.001, 1, 0.01, 3),
     ("Margin", "Sheet margin (mm)", 0, 100, 1, 1),
+    ("Spacing", "Space between patches (mm)", 0, 100, 1, 1),
+    ("SheetWidth", "Custom sheet width (mm)", 10, 10000, 10, 1),
+    ("SheetHeight", "Custom sheet height (mm)", 10, 10000, 10, 1),
     ("FoldAngle", "Fold angle (degrees)", 1, 90, 5, 0),
 )
 CHOICES = (("Scheme", "Scheme"), ("SheetSize", "Sheet"), ("SlotEnd", "Slot ends"))
@@ -70,10 +76,13 @@ class SliceformTaskPanel:
                 setattr(self.obj, name, combo.currentText())
 
     def recompute(self):
+        from sliceform_app import children
+
         self.apply()
         QtGui.QApplication.setOverrideCursor(QtCore.Qt.WaitCursor)
         try:
             self.doc.recompute()
+            children.sync(self.obj)  # inside the panel's transaction
         finally:
             QtGui.QApplication.restoreOverrideCursor()
         self.show_results()
@@ -94,8 +103,11 @@ class SliceformTaskPanel:
         return True
 
     def reject(self):
+        # Back to the document before the panel: properties, results and children. The
+        # design of that state is still in memory, so the recompute is quick.
         self.doc.abortTransaction()
-        self.doc.recompute()
+        if self.doc.isTouched():
+            self.doc.recompute()
         FreeCADGui.ActiveDocument.resetEdit()
         return True
 
