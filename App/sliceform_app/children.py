@@ -429,7 +429,17 @@ class _Observer:
             self.pending.add((obj.Document.Name, obj.Name))
 
     def slotRecomputedDocument(self, doc):
-        if not getattr(doc, "HasPendingTransaction", False):
+        if getattr(doc, "HasPendingTransaction", False):
+            return  # synced before the transaction closes
+        # No transaction: nothing to keep in one Undo step. No recompute can run inside
+        # this one: the GUI syncs as soon as it is over; without it, the new children are
+        # built one by one now and stay marked for the next recompute.
+        if FreeCAD.GuiUp:
+            from PySide import QtCore
+
+            name = doc.Name
+            QtCore.QTimer.singleShot(0, lambda: self._sync(lambda d: d == name, recompute=True))
+        else:
             self._sync(lambda d: d == doc.Name, recompute=False)
 
     def slotBeforeCloseTransaction(self, abort):
@@ -459,6 +469,21 @@ class _Observer:
 
 
 _observer = None
+
+
+class held:
+    """with held(): doc.recompute(); sync(obj) -- the caller syncs, the observer waits."""
+
+    def __enter__(self):
+        self.was = _observer.busy if _observer else False
+        self.pending = set(_observer.pending) if _observer else set()
+        if _observer:
+            _observer.busy = True
+
+    def __exit__(self, *exc):
+        if _observer:
+            _observer.busy = self.was
+            _observer.pending = self.pending
 
 
 def install_observer():

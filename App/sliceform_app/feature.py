@@ -350,6 +350,7 @@ def makeSliceform(source, doc=None, **properties):
         from sliceform_gui import view_provider
 
         view_provider.ViewProviderSliceform(obj.ViewObject)
-    doc.recompute()
-    children.sync(obj)
+    with children.held():
+        doc.recompute()
+        children.sync(obj)
     return obj

@@ -81,8 +81,9 @@ class SliceformTaskPanel:
         self.apply()
         QtGui.QApplication.setOverrideCursor(QtCore.Qt.WaitCursor)
         try:
-            self.doc.recompute()
-            children.sync(self.obj)  # inside the panel's transaction
+            with children.held():
+                self.doc.recompute()
+                children.sync(self.obj)  # inside the panel's transaction
         finally:
             QtGui.QApplication.restoreOverrideCursor()
         self.show_results()
