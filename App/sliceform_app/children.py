@@ -230,6 +230,8 @@ def _new_page(doc, sliceform, index):
     if FreeCAD.GuiUp:
         if hasattr(page.ViewObject, "ShowFrames"):
             page.ViewObject.ShowFrames = False  # a sheet to cut, not a drawing: no frames or labels
+        # Closed until the user opens it: TechDraw opens a visible page again on reopening.
+        page.ViewObject.Visibility = False
     return page
 
 
