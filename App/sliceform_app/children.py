@@ -98,7 +98,7 @@ class _Child:
         return {"Type": self.Type}
 
     def __setstate__(self, state):
-        return None
+        self.built = None
 
     def dumps(self):
         return self.__getstate__()
@@ -134,10 +134,16 @@ class Patch(_Child):
         self.initProperties(obj)
 
     def execute(self, obj):
-        patches = obj.Sliceform.Proxy.flat_patches(obj.Sliceform)
+        proxy = obj.Sliceform.Proxy
+        patches = proxy.flat_patches(obj.Sliceform)
         if obj.Index >= len(patches):
             return  # left over from a larger design until the sync that follows removes it
+        # The feature recomputes for FoldAngle too: the same design needs no new shape.
+        built = (proxy.key, obj.Index)
+        if getattr(self, "built", None) == built and not obj.Shape.isNull():
+            return
         obj.Shape = patch_shape(patches[obj.Index])
+        self.built = built
 
 
 class SheetPatch(_Child):
@@ -168,9 +174,13 @@ class SheetPatch(_Child):
         drawing = sliceform.Proxy.sheet_drawings(sliceform).get(patches[patch.Index]["id"]) if patch.Index < len(patches) else None
         if drawing is None:
             return  # left over from a larger design until the sync that follows removes it
+        built = (sliceform.Proxy.key, patch.Index)
+        if getattr(self, "built", None) == built and not obj.Shape.isNull():
+            return
         sheets = sliceform.Proxy.sheets(sliceform)
         corners = [Part.Vertex(0, 0, 0), Part.Vertex(sheets["width"], sheets["height"], 0)]
         obj.Shape = Part.makeCompound(geometry.patch_drawing(drawing).childShapes() + corners)
+        self.built = built
 
 
 def patch_shape(patch):

@@ -246,8 +246,15 @@ class Sliceform:
         self.design, self.report = self.designs[key][:2]
         return self.design
 
+    def design_now(self, obj):
+        """The design in memory when the feature is up to date (its children ask while a
+        recompute builds them, right after the feature's own execute), else ensure_design."""
+        if self.design is not None and obj.isValid() and "Touched" not in obj.State:
+            return self.design
+        return self.ensure_design(obj)
+
     def _cached(self, obj, slot, make):
-        self.ensure_design(obj)
+        self.design_now(obj)
         entry = list(self.designs[self.key])
         if entry[slot] is None:
             entry[slot] = make(self.design)

@@ -190,6 +190,27 @@ class TestSliceformChildren(unittest.TestCase):
         self.assertIn("larger SheetSize or a smaller Size", message)
         self.assertNotIn("--", message)
 
+    def test_unbuildable_design_is_an_error_state_naming_properties(self):
+        """A design made but not buildable (the CLI's exit 1): the feature is in error with
+        the verdict, the results and the shape show what was made."""
+        from sliceform_app import feature
+
+        box = self.doc.addObject("Part::Box", "Box")
+        box.Length, box.Width, box.Height = 80, 60, 60
+        self.doc.recompute()
+        sliceform = feature.makeSliceform(box, Slices=SLICES, TimeLimit=0.001)
+        self.assertFalse(sliceform.isValid())
+        message = sliceform.getStatusString()
+        self.assertIn("cannot be built", message)
+        self.assertIn("larger TimeLimit, or fewer Slices", message)
+        self.assertNotIn("--", message)
+        self.assertFalse(sliceform.Buildable)
+        self.assertGreater(sliceform.PatchCount, 0)
+        self.assertNotIn("--", sliceform.Report)
+        sliceform.TimeLimit = 60
+        self.doc.recompute()
+        self.assertTrue(sliceform.isValid(), sliceform.getStatusString())
+
     def test_mesh_at_native_size_designs_at_size_150_in_place(self):
         mesh = self.doc.addObject("Mesh::Feature", "Small")
         mesh.Mesh = Mesh.createSphere(5, 48)  # 10 units across: a mesh file carries no unit

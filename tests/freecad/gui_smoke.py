@@ -33,14 +33,14 @@ try:
     FreeCADGui.Selection.clearSelection()
     FreeCADGui.Selection.addSelection(torus)
     FreeCADGui.runCommand("Sliceform_Create")
-    made = [o for o in doc.Objects if o.Name.startswith("Sliceform") and o.TypeId == "Part::FeaturePython"]
+    from sliceform_app import children
+
+    made = [o for o in doc.Objects if children.is_sliceform(o)]
     assert len(made) == 1, "Create added {} sliceforms".format(len(made))
     sliceform = made[0]
     assert sliceform.isValid(), sliceform.getStatusString()
     assert sliceform.Stable and sliceform.Interlocks == 0, sliceform.Report
     assert sliceform.Slices == 32, "the preference was not used"
-    from sliceform_app import children
-
     assert len(children.patches_of(sliceform)) == sliceform.PatchCount, "patches missing"
     assert children.pages_of(sliceform), "pages missing"
     claimed = sliceform.ViewObject.Proxy.claimChildren()
