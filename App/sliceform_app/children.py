@@ -24,8 +24,7 @@ from sliceform_app import geometry
 V = FreeCAD.Vector
 
 
-def QT_TRANSLATE_NOOP(context, text):
-    return text
+QT_TRANSLATE_NOOP = FreeCAD.Qt.QT_TRANSLATE_NOOP
 
 
 # ---------------------------------------------------------------------------------------------

@@ -14,8 +14,7 @@ from sliceform_app import children, native, parameters, shapes
 children.install_observer()
 
 
-def QT_TRANSLATE_NOOP(context, text):
-    return text
+QT_TRANSLATE_NOOP = FreeCAD.Qt.QT_TRANSLATE_NOOP
 
 
 # Properties of documents made before the children linked to the feature: the feature then

@@ -8,12 +8,8 @@ import FreeCADGui
 from PySide import QtCore, QtGui
 
 
-def QT_TRANSLATE_NOOP(context, text):
-    return text
-
-
-def translate(context, text):
-    return QtGui.QApplication.translate(context, text)
+QT_TRANSLATE_NOOP = FreeCAD.Qt.QT_TRANSLATE_NOOP
+translate = FreeCAD.Qt.translate
 
 
 # (property, label, minimum, maximum, step, decimals) for the spin boxes
