@@ -133,6 +133,8 @@ class Patch(_Child):
         self.initProperties(obj)
 
     def execute(self, obj):
+        if not is_sliceform(obj.Sliceform):
+            raise ValueError(QT_TRANSLATE_NOOP("Sliceform", "this patch's sliceform was deleted: delete the patch too"))
         proxy = obj.Sliceform.Proxy
         patches = proxy.flat_patches(obj.Sliceform)
         if obj.Index >= len(patches):
@@ -168,7 +170,9 @@ class SheetPatch(_Child):
 
     def execute(self, obj):
         patch = obj.Patch
-        sliceform = patch.Sliceform
+        sliceform = getattr(patch, "Sliceform", None)
+        if not is_sliceform(sliceform):
+            raise ValueError(QT_TRANSLATE_NOOP("Sliceform", "this drawing's patch or sliceform was deleted"))
         patches = sliceform.Proxy.flat_patches(sliceform)
         drawing = sliceform.Proxy.sheet_drawings(sliceform).get(patches[patch.Index]["id"]) if patch.Index < len(patches) else None
         if drawing is None:
