@@ -235,8 +235,10 @@ def _new_page(doc, sliceform, index):
                      QT_TRANSLATE_NOOP("App::Property", "The sliceform whose sheet this page shows"))
     page.addProperty("App::PropertyInteger", "SheetIndex", "Sliceform",
                      QT_TRANSLATE_NOOP("App::Property", "Which sheet of the layout"))
-    page.setEditorMode("Sliceform", 1)
-    page.setEditorMode("SheetIndex", 1)
+    page.addProperty("App::PropertyString", "Sheet", "Sliceform",
+                     QT_TRANSLATE_NOOP("App::Property", "The sheet's size and margin"))
+    for name in ("Sliceform", "SheetIndex", "Sheet"):
+        page.setEditorMode(name, 1)
     page.Sliceform = sliceform
     page.SheetIndex = index
     page.Template = doc.addObject("TechDraw::DrawSVGTemplate", "{}_Template{:02d}".format(sliceform.Name, index + 1))
@@ -304,26 +306,38 @@ def template_for(sheets):
 # sync: the children follow the design
 
 
+def _sheet_text(sheets):
+    return "{:g} x {:g} mm, margin {:g} mm".format(sheets["width"], sheets["height"], sheets["margin"])
+
+
+def _page_label(sliceform, index):
+    return "{} sheet {}".format(sliceform.Label, index + 1)
+
+
 def wanted(sliceform):
     """What the children should be for the sliceform's design: the patch ids in order, the
-    sheet of each, and the sheet count; None when there is no design to show."""
+    sheet of each, the pages (label and sheet size) and where the views sit; None when there
+    is no design to show."""
     proxy = sliceform.Proxy
     # Right after its recompute, a valid feature's design is the one its properties ask for.
     if getattr(proxy, "design", None) is None or not sliceform.isValid() or "Touched" in sliceform.State:
         return None
     ids = [p["id"] for p in proxy.flat_patches(sliceform)]
+    sheets = proxy.sheets(sliceform)
     sheet_of = {}
-    for s, patches in enumerate(proxy.sheets(sliceform)["sheets"]):
+    for s, patches in enumerate(sheets["sheets"]):
         for p in patches:
             sheet_of[p["id"]] = s
-    return ids, [sheet_of.get(i, -1) for i in ids], len(proxy.sheets(sliceform)["sheets"])
+    pages = [(_page_label(sliceform, i), _sheet_text(sheets)) for i in range(len(sheets["sheets"]))]
+    centre = (round(sheets["width"] / 2, 6), round(sheets["height"] / 2, 6))
+    return ids, [sheet_of.get(i, -1) for i in ids], pages, [centre] * len(ids)
 
 
 def shown(sliceform):
     """What the children show now, in wanted()'s terms."""
     patches = patches_of(sliceform)
     ids = [p.PatchId for p in patches]
-    sheets = []
+    sheets, centres = [], []
     page_of_view = {}
     pages = pages_of(sliceform)
     for page in pages:
@@ -333,7 +347,8 @@ def shown(sliceform):
         sheet_patch = sheet_patch_of(patch)
         views = [] if sheet_patch is None else [o for o in sheet_patch.InList if o.TypeId == "TechDraw::DrawViewPart"]
         sheets.append(page_of_view.get(views[0].Name, -1) if len(views) == 1 else -2)
-    return ids, sheets, len(pages)
+        centres.append((round(views[0].X.Value, 6), round(views[0].Y.Value, 6)) if views else None)
+    return ids, sheets, [(p.Label, getattr(p, "Sheet", "")) for p in pages], centres
 
 
 def in_sync(sliceform):
@@ -349,7 +364,8 @@ def sync(sliceform, recompute=True):
     want = wanted(sliceform)
     if want is None or want == shown(sliceform):
         return False
-    ids, sheet_index, sheet_count = want
+    ids, sheet_index, page_list, _centres = want
+    sheet_count = len(page_list)
     doc = sliceform.Document
     if _observer is not None:
         _observer.pending.discard((doc.Name, sliceform.Name))
@@ -380,11 +396,12 @@ def sync(sliceform, recompute=True):
     pages = pages[:sheet_count]
     while len(pages) < sheet_count:
         pages.append(_new_page(doc, sliceform, len(pages)))
-    template = template_for(sheets)
     for i, page in enumerate(pages):
-        page.Label = "{} sheet {}".format(sliceform.Label, i + 1)
-        if page.Template.Template != template:
-            page.Template.Template = template
+        if page.Label != _page_label(sliceform, i):
+            page.Label = _page_label(sliceform, i)
+        if page.Sheet != _sheet_text(sheets):  # TechDraw keeps its own copy of the file
+            page.Template.Template = template_for(sheets)
+            page.Sheet = _sheet_text(sheets)
 
     # Labels go through a temporary name first: FreeCAD keeps labels unique, and a label
     # taken by a sibling for a moment would come out renumbered ("U002" for U1).
@@ -400,7 +417,8 @@ def sync(sliceform, recompute=True):
             for page in owner:
                 page.removeView(view)
             pages[s].addView(view)
-        view.X, view.Y = sheets["width"] / 2, sheets["height"] / 2
+        if (round(view.X.Value, 6), round(view.Y.Value, 6)) != (round(sheets["width"] / 2, 6), round(sheets["height"] / 2, 6)):
+            view.X, view.Y = sheets["width"] / 2, sheets["height"] / 2
         views.append((patch, sheet_patch, view))
     for patch, sheet_patch, view in views:
         for obj in (patch, sheet_patch, view):

@@ -256,6 +256,32 @@ class TestSliceformChildren(unittest.TestCase):
                 seen.append(view.Label)
         self.assertEqual(sorted(seen), sorted(placed))
 
+    def test_a_new_sheet_size_moves_the_views_and_the_template(self):
+        """Same patches on the same number of sheets, another sheet size: the pages get a
+        template of the new size and the views stay at 1:1 on it."""
+        from sliceform_app import children
+
+        sphere = self.doc.addObject("Part::Sphere", "Sphere")
+        sphere.Radius = 30
+        self.doc.recompute()
+        sliceform = self.create(sphere, Slices=16, SheetSize="Custom", SheetWidth=600, SheetHeight=400)
+        ids = [p.PatchId for p in children.patches_of(sliceform)]
+        FreeCAD.setActiveTransaction("Edit SheetHeight")
+        sliceform.SheetHeight = 500
+        self.doc.recompute()
+        FreeCAD.closeActiveTransaction()
+        self.assertEqual([p.PatchId for p in children.patches_of(sliceform)], ids)
+        self.check_children(sliceform)
+        for page in children.pages_of(sliceform):
+            self.assertEqual(page.Sheet, "600 x 500 mm, margin 10 mm")
+            with open(page.Template.Template) as f:
+                self.assertIn('height="500mm"', f.read())
+            for view in page.Views:
+                self.assertAlmostEqual(view.Y.Value, 250)
+        for patch in children.patches_of(sliceform):
+            sheet_patch = children.sheet_patch_of(patch)
+            self.assertAlmostEqual(sheet_patch.Shape.BoundBox.YMax, 500)  # the corner vertex
+
     def test_older_document_with_child_links_opens_and_migrates(self):
         """A document saved when the feature linked its children (PatchGroup, PatchSketches,
         Pages, SheetGroup): it opens, the links go, the next recompute makes the new
