@@ -439,6 +439,9 @@ def sync(sliceform, recompute=True):
         for obj in order:
             if "Touched" in obj.State:
                 obj.recompute()
+    # The tree asks a parent for its children when the parent changes; these link to it,
+    # so it has not. ChildCount is an output: setting it marks nothing for recompute.
+    sliceform.ChildCount = len(patches) + len(pages)
     return True
 
 

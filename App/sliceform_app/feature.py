@@ -49,6 +49,10 @@ def initProperties(obj):
         add(kind, name, "Results", tip)
         if "ReadOnly" not in obj.getEditorMode(name):
             obj.setEditorMode(name, 1)  # read-only
+    if "ChildCount" not in have:
+        # Output and hidden (attr 8 | 4): changing it never marks the feature for recompute.
+        obj.addProperty("App::PropertyInteger", "ChildCount", "Children",
+                        QT_TRANSLATE_NOOP("App::Property", "Patches and pages made for the design"), 12)
     old = []
     for name in OLD_CHILD_LINKS:
         if name in have:

@@ -53,6 +53,25 @@ def click_away_dialogs(answer):
     QtCore.QTimer.singleShot(50, press)
 
 
+def wait(ms=300):
+    """Lets the GUI run its timers (the tree updates on one)."""
+    from PySide import QtCore
+
+    loop = QtCore.QEventLoop()
+    QtCore.QTimer.singleShot(ms, loop.quit)
+    loop.exec_()
+
+
+def tree_item(tree, label):
+    stack = [tree.topLevelItem(i) for i in range(tree.topLevelItemCount())]
+    while stack:
+        item = stack.pop()
+        if item.text(0) == label:
+            return item
+        stack.extend(item.child(i) for i in range(item.childCount()))
+    raise AssertionError("no tree item " + label)
+
+
 def task_panel_widgets():
     from PySide import QtGui
 
@@ -102,6 +121,21 @@ try:
     assert not page_windows(), "a page opened by itself on Create"
     before = snapshot(doc, sliceform)
     assert before["touched"] == [], before["touched"]
+    # The tree: pages and patches under the sliceform, each patch's drawing under it.
+    tree = max(FreeCADGui.getMainWindow().findChildren(QtGui.QTreeWidget), key=lambda t: t.topLevelItemCount())
+    wait()
+    tree.expandAll()
+    wait()
+    png = os.environ.get("SLICEFORM_SMOKE_PNG")
+    if png:
+        FreeCADGui.getMainWindow().grab().save(png.replace(".png", "_tree.png"))
+    item = tree_item(tree, sliceform.Label)
+    under = sorted(item.child(i).text(0) for i in range(item.childCount()))
+    expected = sorted([p.Label for p in children.pages_of(sliceform)] + [p.Label for p in children.patches_of(sliceform)])
+    assert under == expected, "under the sliceform in the tree: {}".format(under)
+    patch = children.patches_of(sliceform)[0]
+    item = tree_item(tree, patch.Label)
+    assert [item.child(i).text(0) for i in range(item.childCount())] == [children.sheet_patch_of(patch).Label]
 
     # 1. Task panel: a Recompute that changes the patch and sheet counts, then Cancel.
     FreeCADGui.Selection.clearSelection()
@@ -173,8 +207,10 @@ try:
     folder = tempfile.mkdtemp()
     written = sliceform.Proxy.write_files(sliceform, folder)["written"]
     assert "sheet-1.dxf" in written and "report.json" in written, written
-    assert set(sliceform.ViewObject.Proxy.claimChildren()) == set(
-        children.pages_of(sliceform) + children.patches_of(sliceform)), "tree children after reopen"
+    wait()
+    tree = max(FreeCADGui.getMainWindow().findChildren(QtGui.QTreeWidget), key=lambda t: t.topLevelItemCount())
+    item = tree_item(tree, sliceform.Label)
+    assert item.childCount() == sliceform.PatchCount + sliceform.SheetCount, "tree children after reopen"
     outcome = "ok"
 except Exception:
     outcome = traceback.format_exc()
