@@ -4,8 +4,8 @@
 # new patch and sheet count, then Cancel, restores the document and the Undo stack; an edit
 # of the source as the property editor makes it, lowering the count, is one Undo step;
 # Delete removes the children and shows the source again, Undo brings all back; after
-# save and reopen no TechDraw page opens by itself, nothing is marked for recompute and
-# Export works at once. Writes "ok" or the failure to $SLICEFORM_CHILDREN_RESULT.
+# save and reopen no TechDraw page opens by itself, nothing is marked for recompute, the
+# tree shows the children and the Export command works at once. Writes "ok" or the failure to $SLICEFORM_CHILDREN_RESULT.
 import os
 import tempfile
 import traceback
@@ -204,9 +204,20 @@ try:
     sliceform = doc.getObject("Sliceform")
     touched = [o.Name for o in doc.Objects if "Touched" in o.State]
     assert not touched, "marked for recompute after reopen: {}".format(touched)
+    # Export layout, the command as a user runs it (its folder dialog answered).
     folder = tempfile.mkdtemp()
-    written = sliceform.Proxy.write_files(sliceform, folder)["written"]
+    ask = QtGui.QFileDialog.getExistingDirectory
+    QtGui.QFileDialog.getExistingDirectory = staticmethod(lambda *args, **kwargs: folder)
+    try:
+        FreeCADGui.Selection.clearSelection()
+        FreeCADGui.Selection.addSelection(sliceform)
+        FreeCADGui.runCommand("Sliceform_Export")
+    finally:
+        QtGui.QFileDialog.getExistingDirectory = ask
+    written = sorted(os.listdir(folder))
     assert "sheet-1.dxf" in written and "report.json" in written, written
+    touched = [o.Name for o in doc.Objects if "Touched" in o.State]
+    assert not touched and doc.UndoNames == [], "Export changed the document: {} {}".format(touched, doc.UndoNames)
     wait()
     tree = max(FreeCADGui.getMainWindow().findChildren(QtGui.QTreeWidget), key=lambda t: t.topLevelItemCount())
     item = tree_item(tree, sliceform.Label)
