@@ -351,11 +351,6 @@ def shown(sliceform):
     return ids, sheets, [(p.Label, getattr(p, "Sheet", "")) for p in pages], centres
 
 
-def in_sync(sliceform):
-    want = wanted(sliceform)
-    return want is None or want == shown(sliceform)
-
-
 def sync(sliceform, recompute=True):
     """Makes the children match the design: adds or removes patches, sheet patches, views and
     pages when the counts change, moves views between pages, sets the labels to the patch

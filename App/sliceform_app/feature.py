@@ -1,8 +1,10 @@
 # SPDX-License-Identifier: LGPL-2.1-or-later
-"""The parametric Sliceform feature (Part::FeaturePython). Its shape is the assembled
-sliceform at FoldAngle; its children are a sketch per patch and a TechDraw page per sheet.
-State lives in properties; the proxy keeps only the last design in memory (never saved),
-so that a FoldAngle change re-poses the patches without designing again."""
+"""The parametric Sliceform feature (Part::FeaturePython). Its only input is its Source; its
+shape is the assembled sliceform at FoldAngle. Its children (children.py: a patch per
+patch, a TechDraw page per sheet) link to it and build themselves from its design. State
+lives in properties; the proxy keeps the last few designs in memory (never saved), so that
+a FoldAngle change re-poses the patches without designing again, and designs again on
+demand where a design is needed after a reopen (Export, the report)."""
 import hashlib
 import json
 
@@ -214,13 +216,6 @@ class Sliceform:
         source = source_of(obj.Source, size)
         return source, params, _key(source, dict(params, size=size))
 
-    def current_key(self, obj):
-        """The key of the design the feature's source and properties ask for now."""
-        try:
-            return self._inputs(obj)[2]
-        except Exception:
-            return None
-
     def ensure_design(self, obj):
         """The design for the feature's source and properties as they are: the one in
         memory, or designed now (after a reopen, an Undo or a Cancel). Raises DesignError
@@ -346,7 +341,8 @@ MESH_SIZE = 150.0  # mm, longest side of a mesh source unless given
 
 def makeSliceform(source, doc=None, **properties):
     """Adds a Sliceform feature for `source` (any shape-bearing object or a mesh), sets
-    the preferred defaults and then the given properties, and recomputes. Returns it."""
+    the preferred defaults (Size 150 for a mesh, which carries no unit) and then the given
+    properties, recomputes it and makes its children. Returns it."""
     doc = doc or source.Document
     if shapes.is_mesh(source) and "Size" not in properties:
         properties["Size"] = MESH_SIZE  # a mesh carries no unit: the CLI's default size
