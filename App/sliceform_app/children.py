@@ -415,14 +415,20 @@ def sync(sliceform, recompute=True):
         if (round(view.X.Value, 6), round(view.Y.Value, 6)) != (round(sheets["width"] / 2, 6), round(sheets["height"] / 2, 6)):
             view.X, view.Y = sheets["width"] / 2, sheets["height"] / 2
         views.append((patch, sheet_patch, view))
-    for patch, sheet_patch, view in views:
-        for obj in (patch, sheet_patch, view):
-            obj.Label = obj.Name + "_"
+    labels = []
     for (patch, sheet_patch, view), patch_id, s in zip(views, ids, sheet_index):
-        patch.PatchId = patch_id
-        patch.Label = "{} patch {}".format(sliceform.Label, patch_id)
-        sheet_patch.Label = "{} on sheet {}".format(patch_id, s + 1)
-        view.Label = patch_id
+        if patch.PatchId != patch_id:
+            patch.PatchId = patch_id
+        labels += [
+            (patch, "{} patch {}".format(sliceform.Label, patch_id)),
+            (sheet_patch, "{} on sheet {}".format(patch_id, s + 1)),
+            (view, patch_id),
+        ]
+    labels = [(obj, label) for obj, label in labels if obj.Label != label]
+    for obj, _label in labels:
+        obj.Label = obj.Name + "_"
+    for obj, label in labels:
+        obj.Label = label
 
     # The new and changed children are built now, by a recompute of the document (none
     # can run inside another: then each is built alone and stays marked for recompute).
