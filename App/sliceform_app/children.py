@@ -466,6 +466,9 @@ class _Observer:
             self.pending.add((obj.Document.Name, obj.Name))
 
     def slotRecomputedDocument(self, doc):
+        from sliceform_app import feature
+
+        feature.restore_traceback()
         if getattr(doc, "HasPendingTransaction", False):
             return  # synced before the transaction closes
         # No transaction: nothing to keep in one Undo step. No recompute can run inside

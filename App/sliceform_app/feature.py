@@ -117,6 +117,38 @@ class DesignError(Exception):
     shown as the feature's error with the property names, never as a traceback."""
 
 
+_saved_limit = []  # sys.tracebacklimit while it is held at 0, as [had it, its value]
+
+
+def _quiet_traceback():
+    """FreeCAD reports an exception raised in execute() with its Python stack, formatted by
+    the traceback module as the recompute catches it. For a DesignError only the message
+    is meant for the user: the stack is cut to nothing until the recompute is over."""
+    import sys
+
+    if not _saved_limit:
+        _saved_limit[:] = [hasattr(sys, "tracebacklimit"), getattr(sys, "tracebacklimit", None)]
+        sys.tracebacklimit = 0
+        if FreeCAD.GuiUp:
+            from PySide import QtCore
+
+            QtCore.QTimer.singleShot(0, restore_traceback)
+
+
+def restore_traceback():
+    """Gives tracebacks back their length: at the end of every document recompute (the
+    children's observer), at the start of the next execute, or on the GUI's next turn."""
+    import sys
+
+    if _saved_limit:
+        had, value = _saved_limit
+        if had:
+            sys.tracebacklimit = value
+        elif hasattr(sys, "tracebacklimit"):
+            del sys.tracebacklimit
+        del _saved_limit[:]
+
+
 def _key(source, params):
     digest = hashlib.sha1(json.dumps(params, sort_keys=True).encode())
     digest.update(source.get("brep", "").encode())
@@ -274,6 +306,14 @@ class Sliceform:
     # --- the feature ------------------------------------------------------------------------
 
     def execute(self, obj):
+        restore_traceback()
+        try:
+            self._execute(obj)
+        except DesignError:
+            _quiet_traceback()
+            raise
+
+    def _execute(self, obj):
         design = self.ensure_design(obj)
         report = self.report
         self._set_results(obj, report)

@@ -190,6 +190,34 @@ class TestSliceformChildren(unittest.TestCase):
         self.assertIn("larger SheetSize or a smaller Size", message)
         self.assertNotIn("--", message)
 
+    def test_a_failure_is_reported_once_without_a_traceback(self):
+        """What the report view shows for a design that fails: its message once, no Python
+        stack; and tracebacks are as long as before afterwards."""
+        import shutil
+        import subprocess
+        import sys
+
+        script = os.path.join(tempfile.mkdtemp(), "fail.py")
+        with open(script, "w") as f:
+            f.write(
+                "import sys, FreeCAD\n"
+                "from sliceform_app import feature\n"
+                "doc = FreeCAD.newDocument('F')\n"
+                "s = doc.addObject('Part::Sphere', 'S')\n"
+                "s.Radius = 40\n"
+                "doc.recompute()\n"
+                "o = feature.makeSliceform(s, Slices=16, SheetSize='Custom', SheetWidth=40, SheetHeight=40)\n"
+                "FreeCAD.Console.PrintMessage('LIMIT %s\\n' % hasattr(sys, 'tracebacklimit'))\n"
+            )
+        run = subprocess.run([shutil.which("freecadcmd"), script], capture_output=True, text=True, timeout=300)
+        out = run.stdout + run.stderr
+        self.assertEqual(out.count("does not fit a 40x40 sheet"), 1, out[-2000:])
+        self.assertIn("choose a larger SheetSize or a smaller Size", out)
+        self.assertNotIn("Traceback", out)
+        self.assertNotIn('File "', out)
+        self.assertIn("LIMIT False", out)
+        self.assertFalse(hasattr(sys, "tracebacklimit"))
+
     def test_unbuildable_design_is_an_error_state_naming_properties(self):
         """A design made but not buildable (the CLI's exit 1): the feature is in error with
         the verdict, the results and the shape show what was made."""
