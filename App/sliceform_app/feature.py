@@ -323,7 +323,10 @@ class Sliceform:
         problems = report["verdict"]["problems"]
         if not report["verdict"]["buildable"]:
             raise DesignError(
-                parameters.property_message("cannot be built: " + "; ".join(problems or ["see the report"]))
+                parameters.property_message(
+                    FreeCAD.Qt.translate("Sliceform", "cannot be built: ")
+                    + "; ".join(problems or [FreeCAD.Qt.translate("Sliceform", "see the report")])
+                )
             )
 
     def _set_results(self, obj, report):
