@@ -80,3 +80,27 @@ def core_params(obj):
     if obj.SheetSize == "Custom":
         params["sheet"] = "{:g}x{:g}".format(float(obj.SheetWidth.Value), float(obj.SheetHeight.Value))
     return params
+
+
+# Options of the command line that have no property of their own, by what they are here.
+_OPTION_PROPERTIES = {"sheet": "SheetSize", "u": "UDirection", "v": "VDirection", "no-rotate": "Rotate"}
+
+
+def option_properties():
+    """CLI option (without --) -> property name, from the table."""
+    out = {key.replace("_", "-"): name for name, _kind, _group, _default, key, _tip in PARAMETERS if key}
+    out.update(_OPTION_PROPERTIES)
+    return out
+
+
+def property_message(text):
+    """The core's message in FreeCAD's words: the CLI's options (--sheet, --size, ...) become
+    the properties that set them (SheetSize, Size, ...)."""
+    import re
+
+    names = option_properties()
+
+    def named(match):
+        return names.get(match.group(1), match.group(0))
+
+    return re.sub(r"--([a-z][a-z0-9-]*)", named, text)

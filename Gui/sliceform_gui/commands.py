@@ -85,12 +85,10 @@ class CreateCommand:
         source = _selected_solid()
         doc.openTransaction("Create sliceform")
         obj = feature.makeSliceform(source, doc)
-        # Kept even when the design fails: the feature shows the error and can be edited.
+        # Kept even when the design fails: the feature shows the error (FreeCAD reports it
+        # once) and can be edited; the source is hidden either way, Delete shows it again.
+        source.ViewObject.Visibility = False
         doc.commitTransaction()
-        if obj.isValid():
-            source.ViewObject.Visibility = False
-        else:
-            _error(obj.getStatusString())
         FreeCADGui.Selection.clearSelection()
         FreeCADGui.Selection.addSelection(obj)
 
@@ -136,7 +134,7 @@ class ExportCommand:
         if not folder:
             return
         try:
-            files = obj.Proxy.write_files(folder, float(obj.FoldAngle.Value))
+            files = obj.Proxy.write_files(obj, folder)
         except Exception as e:
             _error(e)
             return
@@ -207,8 +205,14 @@ class ReportCommand:
         save = box.addButton("Save report.json...", QtGui.QMessageBox.ActionRole)
         box.addButton(QtGui.QMessageBox.Close)
         box.exec_()
-        report = obj.Proxy.report_json()
-        if box.clickedButton() == save and report:
+        if box.clickedButton() != save:
+            return
+        try:
+            report = obj.Proxy.report_json(obj)  # designed now if not in memory (after a reopen)
+        except Exception as e:
+            _error(e)
+            return
+        if report:
             path, _ = QtGui.QFileDialog.getSaveFileName(box, "Save report", "report.json", "JSON (*.json)")
             if path:
                 with open(path, "w") as f:

@@ -1,7 +1,7 @@
 # SPDX-License-Identifier: LGPL-2.1-or-later
 # GUI smoke test, run by gui_smoke.sh inside FreeCAD under Xvfb: the workbench is listed
 # and activates with its commands and preferences page; Create makes a sliceform of a
-# selected solid (stable, with sketches and a TechDraw page), Edit opens the task panel,
+# selected solid (stable, with its patches and a TechDraw page under it in the tree), Edit opens the task panel,
 # Undo takes the sliceform back; the 3D view and the whole window are saved as PNGs.
 # Writes "ok" or the failure to $SLICEFORM_SMOKE_RESULT, then leaves FreeCAD at once.
 import os
@@ -33,13 +33,18 @@ try:
     FreeCADGui.Selection.clearSelection()
     FreeCADGui.Selection.addSelection(torus)
     FreeCADGui.runCommand("Sliceform_Create")
-    made = [o for o in doc.Objects if o.Name.startswith("Sliceform") and o.TypeId == "Part::FeaturePython"]
+    from sliceform_app import children
+
+    made = [o for o in doc.Objects if children.is_sliceform(o)]
     assert len(made) == 1, "Create added {} sliceforms".format(len(made))
     sliceform = made[0]
     assert sliceform.isValid(), sliceform.getStatusString()
     assert sliceform.Stable and sliceform.Interlocks == 0, sliceform.Report
     assert sliceform.Slices == 32, "the preference was not used"
-    assert len(sliceform.PatchSketches) == sliceform.PatchCount and sliceform.Pages, "children missing"
+    assert len(children.patches_of(sliceform)) == sliceform.PatchCount, "patches missing"
+    assert children.pages_of(sliceform), "pages missing"
+    claimed = sliceform.ViewObject.Proxy.claimChildren()
+    assert set(children.pages_of(sliceform) + children.patches_of(sliceform)) == set(claimed), "tree children"
     assert not torus.ViewObject.Visibility, "the source was not hidden"
 
     FreeCADGui.Selection.clearSelection()
@@ -60,7 +65,7 @@ try:
     # The whole window with the first sheet's TechDraw page beside the 3D view. Under Xvfb
     # a widget grab leaves OpenGL views blank, so the 3D view's own rendering is painted
     # into its place.
-    page = sliceform.Pages[0]
+    page = children.pages_of(sliceform)[0]
     page.ViewObject.show()
     FreeCADGui.updateGui()
     main = FreeCADGui.getMainWindow()
