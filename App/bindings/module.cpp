@@ -130,14 +130,10 @@ std::string brepRoundTrip(const std::string& brep) {
 PYBIND11_MODULE(sliceform_native, m) {
   m.doc() = "Sliceform core: model reading, slicing and design (lengths in mm)";
   m.attr("__version__") = SLICEFORM_VERSION;
-  static py::exception<Error> error(m, "Error");
-  py::register_exception_translator([](std::exception_ptr p) {
-    try {
-      if (p) std::rethrow_exception(p);
-    } catch (const Error& e) {
-      error(e.what());
-    }
-  });
+  // sliceform_native.Error carries the core's message. register_exception keeps the Python
+  // type alive safely across pybind11 versions (2.10 on Debian 12, 2.13 on Debian 13, where
+  // calling a static py::exception object is deprecated).
+  py::register_exception<Error>(m, "Error");
 
   m.def("slice_brep", &sliceBrepString, py::arg("brep"), py::arg("normal"), py::arg("up"), py::arg("count"),
         py::arg("deflection") = 0.0,

@@ -276,6 +276,49 @@ class TestSliceformFeature(unittest.TestCase):
             self.assertIn(name, written)
             self.assertGreater(os.path.getsize(os.path.join(folder, name)), 0)
 
+    def test_export_leaves_freecads_own_step_export_unchanged(self):
+        # The core's STEP writer and FreeCAD's share OCCT's process-wide settings
+        # (Interface_Static): after a sliceform export, FreeCAD writes a box as before, with
+        # its 2D curves (issue 15: 15,381 bytes before, 6,854 after, when the core left
+        # write.surfacecurve.mode at 0).
+        import Import
+        from sliceform_app import feature
+
+        box = self.doc.addObject("Part::Box", "Box")
+        self.doc.recompute()
+        folder = tempfile.mkdtemp()
+
+        def exports(tag):
+            files = {}
+            for name, write in (("Part", Part.export), ("Import", Import.export)):
+                path = os.path.join(folder, "box-{}-{}.step".format(name, tag))
+                write([box], path)
+                with open(path, "rb") as f:
+                    data = f.read()
+                # Only two parts of the header may differ: the time stamp, and the number
+                # OCCT gives each file written in a session ('... STEP translator 7.6 3').
+                data = re.sub(rb"\d{4}-\d\d-\d\dT\d\d:\d\d:\d\d", b"TIME", data)
+                files[name] = re.sub(rb"(STEP translator [\d.]+) \d+'", rb"\1 N'", data)
+            return files
+
+        before = exports("before")
+        for data in before.values():
+            self.assertIn(b"PCURVE", data)
+        sphere = self.doc.addObject("Part::Sphere", "Sphere")
+        sphere.Radius = 30
+        self.doc.recompute()
+        sliceform = feature.makeSliceform(sphere, Slices=12)
+        layout = os.path.join(folder, "layout")
+        os.makedirs(layout)
+        written = sliceform.Proxy.write_files(layout)["written"]
+        self.assertIn("assembly.step", written)
+        with open(os.path.join(layout, "assembly.step"), "rb") as f:
+            self.assertNotIn(b"PCURVE", f.read())  # the core's own setting did apply
+        after = exports("after")
+        for name in before:
+            self.assertEqual(len(after[name]), len(before[name]), name)
+            self.assertEqual(after[name], before[name], name)
+
 
 if __name__ == "__main__":
     unittest.main()

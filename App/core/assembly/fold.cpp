@@ -10,12 +10,18 @@
 #include <Message.hxx>
 #include <Message_Messenger.hxx>
 #include <Message_Printer.hxx>
+#include <STEPControl_Controller.hxx>
 #include <STEPControl_Writer.hxx>
+#include <Standard_Version.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopTools_ListOfShape.hxx>
 #include <TopoDS.hxx>
 #include <TopoDS_Compound.hxx>
 #include <gp_Ax1.hxx>
+#if OCC_VERSION_HEX >= 0x070800
+#include <StepData_ConfParameters.hxx>
+#include <UnitsMethods_LengthUnit.hxx>
+#endif
 
 #include <cmath>
 #include <mutex>
@@ -24,6 +30,7 @@
 #include "support/atomic_file.hpp"
 #include "support/error.hpp"
 #include "support/occt_guard.hpp"
+#include "support/occt_statics.hpp"
 
 namespace sliceform {
 namespace {
@@ -104,13 +111,28 @@ void writeShape(const TopoDS_Shape& shape, const std::string& path) {
         for (TopExp_Explorer e(f.Current(), TopAbs_EDGE); e.More(); e.Next()) edges.Append(e.Current());
         BRepLib::BuildPCurveForEdgesOnPlane(edges, TopoDS::Face(f.Current()));
       }
+      // The writer's settings: millimetres, and no 2D curves on the planes (readers rebuild
+      // them, and they doubled the file and the time: a mesh's polygon patches have tens of
+      // thousands of edges). They are process-wide statics, FreeCAD's own STEP/IGES export
+      // settings too: every one is put back as it was when the writer is done, also when it
+      // fails. The writer's controller is set up first, so its statics are in the snapshot.
+      STEPControl_Controller::Init();
+      const StaticsRestorer restoreStatics;
       STEPControl_Writer writer;
+#if OCC_VERSION_HEX >= 0x070800
+      // OCCT 7.8 takes the writer's settings as parameters: ours, and the rest as the statics
+      // have them (as OCCT 7.6 reads them).
+      StepData_ConfParameters settings;
+      settings.InitFromStatic();
+      settings.WriteUnit = UnitsMethods_LengthUnit_Millimeter;
+      settings.WriteSurfaceCurMode = false;
+      const IFSelect_ReturnStatus transferred = writer.Transfer(withCurves, STEPControl_AsIs, settings);
+#else
       Interface_Static::SetCVal("write.step.unit", "MM");
-      // No 2D curves on the planes: readers rebuild them, and they doubled the file and the
-      // time (a mesh's polygon patches have tens of thousands of edges).
       Interface_Static::SetIVal("write.surfacecurve.mode", 0);
-      if (writer.Transfer(withCurves, STEPControl_AsIs) != IFSelect_RetDone ||
-          writer.Write(temporary.c_str()) != IFSelect_RetDone)
+      const IFSelect_ReturnStatus transferred = writer.Transfer(withCurves, STEPControl_AsIs);
+#endif
+      if (transferred != IFSelect_RetDone || writer.Write(temporary.c_str()) != IFSelect_RetDone)
         throw Error(ErrorKind::Io, "cannot write " + path);
     });
   });
