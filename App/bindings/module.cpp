@@ -16,6 +16,7 @@
 #include "slicing/mesh_slicer.hpp"
 #include "support/error.hpp"
 #include "support/occt_guard.hpp"
+#include "support/occt_statics.hpp"
 
 namespace py = pybind11;
 using namespace sliceform;
@@ -150,4 +151,17 @@ PYBIND11_MODULE(sliceform_native, m) {
         "for CAD files, the solids as a BREP string.");
   bindDesign(m);
   m.def("brep_round_trip", &brepRoundTrip, py::arg("brep"), "Reads a BREP string and writes it back.");
+  m.def(
+      "occt_settings",
+      [] {
+        py::dict out;
+        for (const std::string& line : StaticsSnapshot().describe()) {
+          const size_t eq = line.find('=');
+          out[py::str(line.substr(0, eq))] = line.substr(eq + 1);
+        }
+        return out;
+      },
+      "OpenCASCADE's process-wide data-exchange settings (Interface_Static), name -> value "
+      "as text: shared with FreeCAD's own STEP/IGES import and export, and left as they were "
+      "by every core function.");
 }

@@ -253,7 +253,8 @@ TEST(Fold, AssemblyIsWrittenAsStepAndBrep) {
 
 // The STEP writer's settings are OCCT's process-wide statics, which in FreeCAD are FreeCAD's
 // export settings too: writing the assembly leaves every one of them as it found it (here set
-// to values the writer itself changes), yet writes its own millimetres.
+// to values the writer itself changes), yet writes its own AP214 in millimetres (OCCT 7.8.1
+// crashes writing AP203).
 TEST(Fold, StepWriterLeavesOcctsGlobalSettingsAsTheyWere) {
   const Design d = design(modelFromShape(test::makeSphere(40), "sphere"), 12);
   test::TempDir dir;
@@ -272,6 +273,7 @@ TEST(Fold, StepWriterLeavesOcctsGlobalSettingsAsTheyWere) {
   std::ifstream in(dir.file("a.step"));
   const std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
   EXPECT_NE(text.find(".MILLI.,.METRE."), std::string::npos);
+  EXPECT_NE(text.find("AUTOMOTIVE_DESIGN"), std::string::npos);  // AP214, not the statics' AP203
   EXPECT_EQ(text.find(".INCH."), std::string::npos);
   EXPECT_EQ(text.find("PCURVE"), std::string::npos);
   // A snapshot puts back what changed after it, and says how many it put back.

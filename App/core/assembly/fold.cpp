@@ -111,25 +111,28 @@ void writeShape(const TopoDS_Shape& shape, const std::string& path) {
         for (TopExp_Explorer e(f.Current(), TopAbs_EDGE); e.More(); e.Next()) edges.Append(e.Current());
         BRepLib::BuildPCurveForEdgesOnPlane(edges, TopoDS::Face(f.Current()));
       }
-      // The writer's settings: millimetres, and no 2D curves on the planes (readers rebuild
-      // them, and they doubled the file and the time: a mesh's polygon patches have tens of
-      // thousands of edges). They are process-wide statics, FreeCAD's own STEP/IGES export
-      // settings too: every one is put back as it was when the writer is done, also when it
-      // fails. The writer's controller is set up first, so its statics are in the snapshot.
+      // The writer's settings: AP214, millimetres, and no 2D curves on the planes (readers
+      // rebuild them, and they doubled the file and the time: a mesh's polygon patches have
+      // tens of thousands of edges). The schema is ours too, not the host's: OCCT 7.8.1
+      // crashes writing AP203 (a user's FreeCAD preference). In OCCT 7.6 these settings are
+      // process-wide statics, FreeCAD's own STEP/IGES export settings too: every static is
+      // put back as it was when the writer is done, also when it fails. The writer's
+      // controller is set up first, so its statics are in the snapshot.
       STEPControl_Controller::Init();
       const StaticsRestorer restoreStatics;
-      STEPControl_Writer writer;
 #if OCC_VERSION_HEX >= 0x070800
-      // OCCT 7.8 takes the writer's settings as parameters: ours, and the rest as the statics
-      // have them (as OCCT 7.6 reads them).
+      // OCCT 7.8 takes them as parameters (OCCT's defaults, then ours).
+      STEPControl_Writer writer;
       StepData_ConfParameters settings;
-      settings.InitFromStatic();
+      settings.WriteSchema = StepData_ConfParameters::WriteMode_StepSchema_AP214CD;
       settings.WriteUnit = UnitsMethods_LengthUnit_Millimeter;
       settings.WriteSurfaceCurMode = false;
       const IFSelect_ReturnStatus transferred = writer.Transfer(withCurves, STEPControl_AsIs, settings);
 #else
+      Interface_Static::SetCVal("write.step.schema", "AP214CD");
       Interface_Static::SetCVal("write.step.unit", "MM");
       Interface_Static::SetIVal("write.surfacecurve.mode", 0);
+      STEPControl_Writer writer;  // after the schema: its model's header is made here
       const IFSelect_ReturnStatus transferred = writer.Transfer(withCurves, STEPControl_AsIs);
 #endif
       if (transferred != IFSelect_RetDone || writer.Write(temporary.c_str()) != IFSelect_RetDone)
