@@ -79,13 +79,17 @@ root_base() {
   echo "$dir"
 }
 
-# root_enter ROOT: /proc, /dev and /dev/pts for a chroot into ROOT, and the host's DNS.
+# root_enter ROOT: /proc, /dev and /dev/pts for a chroot into ROOT, the host's DNS, and
+# dpkg without fsync.
 root_enter() {
   local root=$1
   _root_mount -t proc proc "$root/proc"
   _root_mount --bind /dev "$root/dev"
   _root_mount --bind /dev/pts "$root/dev/pts"
   cp -L /etc/resolv.conf "$root/etc/resolv.conf" 2>/dev/null || true
+  # These roots are caches or thrown away: dpkg need not sync every file it unpacks (the
+  # few hundred packages of FreeCAD).
+  echo force-unsafe-io >"$root/etc/dpkg/dpkg.cfg.d/sliceform-unsafe-io"
 }
 
 # root_overlay BASE ARCHIVES: a throwaway root whose changes go to a temporary folder over

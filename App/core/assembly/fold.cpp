@@ -12,16 +12,11 @@
 #include <Message_Printer.hxx>
 #include <STEPControl_Controller.hxx>
 #include <STEPControl_Writer.hxx>
-#include <Standard_Version.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopTools_ListOfShape.hxx>
 #include <TopoDS.hxx>
 #include <TopoDS_Compound.hxx>
 #include <gp_Ax1.hxx>
-#if OCC_VERSION_HEX >= 0x070800
-#include <StepData_ConfParameters.hxx>
-#include <UnitsMethods_LengthUnit.hxx>
-#endif
 
 #include <cmath>
 #include <mutex>
@@ -114,27 +109,19 @@ void writeShape(const TopoDS_Shape& shape, const std::string& path) {
       // The writer's settings: AP214, millimetres, and no 2D curves on the planes (readers
       // rebuild them, and they doubled the file and the time: a mesh's polygon patches have
       // tens of thousands of edges). The schema is ours too, not the host's: OCCT 7.8.1
-      // crashes writing AP203 (a user's FreeCAD preference). In OCCT 7.6 these settings are
-      // process-wide statics, FreeCAD's own STEP/IGES export settings too: every static is
-      // put back as it was when the writer is done, also when it fails. The writer's
-      // controller is set up first, so its statics are in the snapshot.
+      // crashes writing AP203 (a user's FreeCAD preference). They are process-wide statics,
+      // FreeCAD's own STEP/IGES export settings too: every static is put back as it was when
+      // the writer is done, also when it fails. The writer's controller is set up first, so
+      // its statics are in the snapshot. OCCT 7.8's writer also takes its settings as
+      // parameters (StepData_ConfParameters), but still makes the file's header from the
+      // statics (FILE_SCHEMA said AP203 over AP214 entities), so the statics are set on both.
       STEPControl_Controller::Init();
       const StaticsRestorer restoreStatics;
-#if OCC_VERSION_HEX >= 0x070800
-      // OCCT 7.8 takes them as parameters (OCCT's defaults, then ours).
-      STEPControl_Writer writer;
-      StepData_ConfParameters settings;
-      settings.WriteSchema = StepData_ConfParameters::WriteMode_StepSchema_AP214CD;
-      settings.WriteUnit = UnitsMethods_LengthUnit_Millimeter;
-      settings.WriteSurfaceCurMode = false;
-      const IFSelect_ReturnStatus transferred = writer.Transfer(withCurves, STEPControl_AsIs, settings);
-#else
       Interface_Static::SetCVal("write.step.schema", "AP214CD");
       Interface_Static::SetCVal("write.step.unit", "MM");
       Interface_Static::SetIVal("write.surfacecurve.mode", 0);
       STEPControl_Writer writer;  // after the schema: its model's header is made here
       const IFSelect_ReturnStatus transferred = writer.Transfer(withCurves, STEPControl_AsIs);
-#endif
       if (transferred != IFSelect_RetDone || writer.Write(temporary.c_str()) != IFSelect_RetDone)
         throw Error(ErrorKind::Io, "cannot write " + path);
     });
