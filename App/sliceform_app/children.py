@@ -24,13 +24,23 @@ def _reuse(doc, existing, count, make):
 
 
 def _remove(doc, obj):
-    """Removes a child and what only it uses: a page's views and template, a view's source."""
-    owned = list(getattr(obj, "Views", []) or [])
-    template = getattr(obj, "Template", None)
-    if template is not None and not isinstance(template, str):
-        owned.append(template)
-    if obj.TypeId == "TechDraw::DrawViewPart":
-        owned.extend(obj.Source)
+    """Removes a child and what only it uses: a page's views and template, a view's source.
+    A page is emptied first and removed last: FreeCAD 1.0 removes a page's views itself when
+    the page goes, and crashed (in DrawPage::unsetupObject) on views already removed in the
+    same recompute."""
+    if obj.TypeId == "TechDraw::DrawPage":
+        for view in list(obj.Views or []):
+            obj.removeView(view)
+            if view.Document == doc:
+                _remove(doc, view)
+        template = obj.Template
+        if template is not None and not isinstance(template, str):
+            obj.Template = None
+            if template.Document == doc:
+                doc.removeObject(template.Name)
+        doc.removeObject(obj.Name)
+        return
+    owned = list(obj.Source) if obj.TypeId == "TechDraw::DrawViewPart" else []
     doc.removeObject(obj.Name)  # first, so no view recomputes without its source
     for child in owned:
         if child.Document == doc:

@@ -6,6 +6,7 @@ save, close, reopen and recompute. Run through TestSliceform (tests/freecad/run.
 import os
 import re
 import tempfile
+import time
 import unittest
 
 import FreeCAD
@@ -43,15 +44,29 @@ def make_body_with_pocket(doc):
     return body, pad, pocket
 
 
-def views_compute_headless():
+def _qt_application():
     """FreeCAD 0.20 computes TechDraw views during the recompute. FreeCAD 1.0 computes them in
     threads whose results arrive through Qt's event loop, and freecadcmd 1.0 has no Qt
-    application: headless, the views never get their edges. (Making one in the test lets
-    them finish, but then FreeCAD 1.0 crashed in test_torus when the redesign removed the
-    second sheet's views, so the tests do not.)"""
+    application: headless, the views would never get their edges. Made once, before any
+    view; in the GUI it is FreeCAD's own."""
     from PySide import QtCore
 
-    return FreeCAD.Version()[0] == "0" or QtCore.QCoreApplication.instance() is not None
+    return QtCore.QCoreApplication.instance() or QtCore.QCoreApplication([])
+
+
+_QT_APPLICATION = _qt_application()
+
+
+def wait_for_views(page, seconds=60):
+    """Runs Qt's event loop until every view of the page has its edges (FreeCAD 1.0)."""
+    from PySide import QtCore
+
+    deadline = time.monotonic() + seconds
+    while not all(view.getVisibleEdges() for view in page.Views):
+        if time.monotonic() > deadline:
+            raise AssertionError("TechDraw views without edges after {} s".format(seconds))
+        QtCore.QCoreApplication.processEvents(QtCore.QEventLoop.AllEvents, 100)
+        time.sleep(0.02)
 
 
 class TestSliceformFeature(unittest.TestCase):
@@ -83,8 +98,7 @@ class TestSliceformFeature(unittest.TestCase):
         for view in page.Views:
             self.assertEqual(view.TypeId, "TechDraw::DrawViewPart")
             self.assertGreater(len(view.Source[0].Shape.Edges), 4, view.Label)
-        if not views_compute_headless():
-            return  # FreeCAD 1.0 in freecadcmd: the views stay empty (above)
+        wait_for_views(page)
         dxf = os.path.join(tempfile.mkdtemp(), "sheet.dxf")
         TechDraw.writeDXFPage(page, dxf)
         text = open(dxf).read()
