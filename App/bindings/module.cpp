@@ -16,6 +16,7 @@
 #include "slicing/mesh_slicer.hpp"
 #include "support/error.hpp"
 #include "support/occt_guard.hpp"
+#include "support/occt_statics.hpp"
 
 namespace py = pybind11;
 using namespace sliceform;
@@ -130,14 +131,10 @@ std::string brepRoundTrip(const std::string& brep) {
 PYBIND11_MODULE(sliceform_native, m) {
   m.doc() = "Sliceform core: model reading, slicing and design (lengths in mm)";
   m.attr("__version__") = SLICEFORM_VERSION;
-  static py::exception<Error> error(m, "Error");
-  py::register_exception_translator([](std::exception_ptr p) {
-    try {
-      if (p) std::rethrow_exception(p);
-    } catch (const Error& e) {
-      error(e.what());
-    }
-  });
+  // sliceform_native.Error carries the core's message. register_exception keeps the Python
+  // type alive safely across pybind11 versions (2.10 on Debian 12, 2.13 on Debian 13, where
+  // calling a static py::exception object is deprecated).
+  py::register_exception<Error>(m, "Error");
 
   m.def("slice_brep", &sliceBrepString, py::arg("brep"), py::arg("normal"), py::arg("up"), py::arg("count"),
         py::arg("deflection") = 0.0,
@@ -154,4 +151,17 @@ PYBIND11_MODULE(sliceform_native, m) {
         "for CAD files, the solids as a BREP string.");
   bindDesign(m);
   m.def("brep_round_trip", &brepRoundTrip, py::arg("brep"), "Reads a BREP string and writes it back.");
+  m.def(
+      "occt_settings",
+      [] {
+        py::dict out;
+        for (const std::string& line : StaticsSnapshot().describe()) {
+          const size_t eq = line.find('=');
+          out[py::str(line.substr(0, eq))] = line.substr(eq + 1);
+        }
+        return out;
+      },
+      "OpenCASCADE's process-wide data-exchange settings (Interface_Static), name -> value "
+      "as text: shared with FreeCAD's own STEP/IGES import and export, and left as they were "
+      "by every core function.");
 }

@@ -20,7 +20,8 @@ def native():
     except ImportError as e:
         raise NativeModuleMissing(
             "Sliceform's compiled core (sliceform_native) could not be loaded: {}. "
-            "Build and install it with the README's run command; it must be built for "
-            "FreeCAD's Python (/usr/bin/python3).".format(e)
+            "On Debian 12 or 13 install the freecad-sliceform package instead; elsewhere "
+            "build and install it as the README's Install section says: it must be built "
+            "for FreeCAD's own Python.".format(e)
         ) from e
     return sliceform_native

@@ -269,8 +269,15 @@ def remove_objects(doc, objects):
             for page in [o for o in obj.InList if o.TypeId == "TechDraw::DrawPage"]:
                 page.removeView(obj)
         elif obj.TypeId == "TechDraw::DrawPage":
+            # Emptied first, its template too: FreeCAD 1.0 removes a page's views itself when
+            # the page goes (DrawPage::unsetupObject) and crashed on views already removed.
             page_views = list(obj.Views)
             obj.Views = []
+            template = obj.Template
+            if template is not None and not isinstance(template, str):
+                obj.Template = None
+                if template not in objects:
+                    page_views.append(template)
             remove_objects(doc, page_views)
         doc.removeObject(name)
 

@@ -77,10 +77,14 @@ def svg_loops(path, height):
         fail(f"{path}: width is not in mm: {root.get('width')}")
     loops = {"cut": [], "engrave": []}
     for element in root.iter(ns + "path"):
+        # The stroke colour: in the style attribute (cairo 1.16, Debian 12) or as its own
+        # attribute, "rgb(100%, 0%, 0%)" (cairo 1.18, Debian 13).
         style = element.get("style", "")
-        kind = "cut" if "stroke:rgb(100%,0%,0%)" in style else "engrave" if "stroke:rgb(0%,0%,100%)" in style else None
+        in_style = re.search(r"(?:^|;)\s*stroke\s*:\s*([^;]+)", style)
+        stroke = (element.get("stroke") or (in_style.group(1) if in_style else "")).replace(" ", "")
+        kind = {"rgb(100%,0%,0%)": "cut", "rgb(0%,0%,100%)": "engrave"}.get(stroke)
         if kind is None:
-            fail(f"{path}: unexpected path style: {style}")
+            fail(f"{path}: unexpected path stroke: {stroke!r} (style {style!r})")
         matrix = [1.0, 0.0, 0.0, 1.0, 0.0, 0.0]
         if element.get("transform"):
             m = re.fullmatch(r"matrix\(([^)]*)\)", element.get("transform"))

@@ -7,11 +7,15 @@
 #include <BRepAlgoAPI_Section.hxx>
 #include <BRepBndLib.hxx>
 #include <BRepGProp.hxx>
+#include <Interface_Static.hxx>
 #include <Bnd_Box.hxx>
 #include <GProp_GProps.hxx>
 #include <STEPControl_Reader.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopoDS.hxx>
+
+#include <fstream>
+#include <iterator>
 
 #include "arrangement/arrange.hpp"
 #include "assembly/fold.hpp"
@@ -20,6 +24,7 @@
 #include "geometry/simplify.hpp"
 #include "realization/realize.hpp"
 #include "support/error.hpp"
+#include "support/occt_statics.hpp"
 #include "test_support.hpp"
 #include "verify/emitted.hpp"
 
@@ -286,6 +291,40 @@ TEST(Fold, PolygonLoopsGoToStepAsOneEdgeEach) {
   wires = 0;
   for (TopExp_Explorer w(back, TopAbs_WIRE); w.More(); w.Next()) ++wires;
   EXPECT_EQ(wires, 2);
+}
+
+// The STEP writer's settings are OCCT's process-wide statics, which in FreeCAD are FreeCAD's
+// export settings too: writing the assembly leaves every one of them as it found it (here set
+// to values the writer itself changes), yet writes its own AP214 in millimetres (OCCT 7.8.1
+// crashes writing AP203).
+TEST(Fold, StepWriterLeavesOcctsGlobalSettingsAsTheyWere) {
+  const Design d = design(modelFromShape(test::makeSphere(40), "sphere"), 12);
+  test::TempDir dir;
+  const TopoDS_Shape all = assemble(d.arrangement, d.faces, 60);
+  writeShape(all, dir.file("first.step"));  // the STEP statics exist from here on
+  const StaticsRestorer asTheOtherTestsHadThem;
+  ASSERT_TRUE(Interface_Static::SetCVal("write.step.unit", "INCH"));
+  ASSERT_TRUE(Interface_Static::SetIVal("write.surfacecurve.mode", 1));
+  ASSERT_TRUE(Interface_Static::SetCVal("write.step.schema", "AP203"));
+  const StaticsSnapshot before;
+  EXPECT_GT(before.describe().size(), 20u);
+  writeShape(all, dir.file("a.step"));
+  EXPECT_EQ(StaticsSnapshot().describe(), before.describe());
+  EXPECT_STREQ(Interface_Static::CVal("write.step.unit"), "INCH");
+  EXPECT_EQ(Interface_Static::IVal("write.surfacecurve.mode"), 1);
+  std::ifstream in(dir.file("a.step"));
+  const std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  EXPECT_NE(text.find(".MILLI.,.METRE."), std::string::npos);
+  EXPECT_NE(text.find("AUTOMOTIVE_DESIGN"), std::string::npos);  // AP214, not the statics' AP203
+  EXPECT_EQ(text.find(".INCH."), std::string::npos);
+  EXPECT_EQ(text.find("PCURVE"), std::string::npos);
+  // A snapshot puts back what changed after it, and says how many it put back.
+  const StaticsSnapshot saved;
+  Interface_Static::SetIVal("write.surfacecurve.mode", 0);
+  Interface_Static::SetCVal("write.step.unit", "M");
+  EXPECT_EQ(saved.restore(), 2);
+  EXPECT_EQ(saved.restore(), 0);
+  EXPECT_EQ(StaticsSnapshot().describe(), before.describe());
 }
 
 }  // namespace

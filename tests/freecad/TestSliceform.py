@@ -27,6 +27,21 @@ class TestInstalledAddon(unittest.TestCase):
         self.assertIn(os.path.join("Mod", "Sliceform"), core.__file__)
         self.assertRegex(core.__version__, r"^\d+\.\d+\.\d+$")
 
+    def test_package_xml_is_read_by_this_freecad(self):
+        # The Addon Manager's metadata, as FreeCAD itself parses it: the name, the version
+        # of the compiled core, the oldest FreeCAD tested, and no placeholder addresses.
+        import sliceform_app
+        from sliceform_app import native
+
+        path = os.path.join(sliceform_app.ADDON_DIR, "package.xml")
+        metadata = FreeCAD.Metadata(path)
+        self.assertEqual(metadata.Name, "Sliceform")
+        self.assertEqual(metadata.Version, native().__version__)
+        self.assertEqual(str(metadata.FreeCADMin), "0.20.0")
+        self.assertEqual([w.Classname for w in metadata.Content["workbench"]], ["SliceformWorkbench"])
+        self.assertTrue(metadata.License)
+        self.assertNotIn("example.", open(path).read())
+
     def test_missing_native_module_gives_a_clear_error(self):
         import sliceform_app
 

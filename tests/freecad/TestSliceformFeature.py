@@ -6,6 +6,7 @@ and the source intact; save, close, reopen and recompute. Run through TestSlicef
 import os
 import re
 import tempfile
+import time
 import unittest
 
 import FreeCAD
@@ -31,7 +32,9 @@ def make_body_with_pocket(doc):
     pad.Profile = pad_sketch
     pad.Length = 40
     pocket_sketch = body.newObject("Sketcher::SketchObject", "PocketSketch")
-    pocket_sketch.Support = (pad, ["Face6"])  # the top face
+    # FreeCAD 1.0 renamed a sketch's Support to AttachmentSupport.
+    support = "AttachmentSupport" if hasattr(pocket_sketch, "AttachmentSupport") else "Support"
+    setattr(pocket_sketch, support, (pad, ["Face6"]))  # the top face
     pocket_sketch.MapMode = "FlatFace"
     pocket_sketch.addGeometry(Part.Circle(FreeCAD.Vector(40, 25, 0), FreeCAD.Vector(0, 0, 1), 12), False)
     pocket = body.newObject("PartDesign::Pocket", "Pocket")
@@ -39,6 +42,31 @@ def make_body_with_pocket(doc):
     pocket.Length = 25
     doc.recompute()
     return body, pad, pocket
+
+
+def _qt_application():
+    """FreeCAD 0.20 computes TechDraw views during the recompute. FreeCAD 1.0 computes them in
+    threads whose results arrive through Qt's event loop, and freecadcmd 1.0 has no Qt
+    application: headless, the views would never get their edges. Made once, before any
+    view; in the GUI it is FreeCAD's own."""
+    from PySide import QtCore
+
+    return QtCore.QCoreApplication.instance() or QtCore.QCoreApplication([])
+
+
+_QT_APPLICATION = _qt_application()
+
+
+def wait_for_views(page, seconds=60):
+    """Runs Qt's event loop until every view of the page has its edges (FreeCAD 1.0)."""
+    from PySide import QtCore
+
+    deadline = time.monotonic() + seconds
+    while not all(view.getVisibleEdges() for view in page.Views):
+        if time.monotonic() > deadline:
+            raise AssertionError("TechDraw views without edges after {} s".format(seconds))
+        QtCore.QCoreApplication.processEvents(QtCore.QEventLoop.AllEvents, 100)
+        time.sleep(0.02)
 
 
 class TestSliceformFeature(unittest.TestCase):
@@ -83,6 +111,11 @@ class TestSliceformFeature(unittest.TestCase):
         page = pages[0]
         self.assertEqual(page.TypeId, "TechDraw::DrawPage")
         self.assertTrue(page.Views)
+        # Every view shows a hidden part with its patch's cut lines and labels.
+        for view in page.Views:
+            self.assertEqual(view.TypeId, "TechDraw::DrawViewPart")
+            self.assertGreater(len(view.Source[0].Shape.Edges), 4, view.Label)
+        wait_for_views(page)
         dxf = os.path.join(tempfile.mkdtemp(), "sheet.dxf")
         TechDraw.writeDXFPage(page, dxf)
         text = open(dxf).read()
@@ -295,6 +328,57 @@ class TestSliceformFeature(unittest.TestCase):
         for name in ("report.json", "sheets.pdf", "sheet-1.svg", "sheet-1.dxf", "assembly.step"):
             self.assertIn(name, written)
             self.assertGreater(os.path.getsize(os.path.join(folder, name)), 0)
+
+    def test_export_leaves_freecads_own_step_export_unchanged(self):
+        # The core's STEP writer and FreeCAD's share OCCT's process-wide settings
+        # (Interface_Static): after a sliceform export, FreeCAD writes a box as before, with
+        # its 2D curves (issue 15: 15,381 bytes before, 6,854 after, when the core left
+        # write.surfacecurve.mode at 0).
+        import Import
+        from sliceform_app import feature, native
+
+        box = self.doc.addObject("Part::Box", "Box")
+        self.doc.recompute()
+        folder = tempfile.mkdtemp()
+
+        def exports(tag):
+            files = {}
+            for name, write in (("Part", Part.export), ("Import", Import.export)):
+                path = os.path.join(folder, "box-{}-{}.step".format(name, tag))
+                write([box], path)
+                with open(path, "rb") as f:
+                    data = f.read()
+                # Only two parts of the header may differ: the time stamp, and the number
+                # OCCT gives each file written in a session ('... STEP translator 7.6 3').
+                data = re.sub(rb"\d{4}-\d\d-\d\dT\d\d:\d\d:\d\d", b"TIME", data)
+                files[name] = re.sub(rb"(STEP translator [\d.]+) \d+'", rb"\1 N'", data)
+            return files
+
+        before = exports("before")
+        if FreeCAD.Version()[0] == "0":
+            # FreeCAD 0.20 writes a box's 2D curves, which the core's setting left out.
+            # (FreeCAD 1.0 sets that setting itself before each export, off by default.)
+            for data in before.values():
+                self.assertIn(b"PCURVE", data)
+        sphere = self.doc.addObject("Part::Sphere", "Sphere")
+        sphere.Radius = 30
+        self.doc.recompute()
+        sliceform = feature.makeSliceform(sphere, Slices=12)
+        layout = os.path.join(folder, "layout")
+        os.makedirs(layout)
+        settings = native().occt_settings()
+        self.assertGreater(len(settings), 20)
+        self.assertIn("write.surfacecurve.mode", settings)
+        written = sliceform.Proxy.write_files(layout)["written"]
+        # Every OCCT setting as it was, whichever FreeCAD sets some of them itself.
+        self.assertEqual(native().occt_settings(), settings)
+        self.assertIn("assembly.step", written)
+        with open(os.path.join(layout, "assembly.step"), "rb") as f:
+            self.assertNotIn(b"PCURVE", f.read())  # the core's own setting did apply
+        after = exports("after")
+        for name in before:
+            self.assertEqual(len(after[name]), len(before[name]), name)
+            self.assertEqual(after[name], before[name], name)
 
 
 if __name__ == "__main__":

@@ -10,6 +10,7 @@
 #include <Message.hxx>
 #include <Message_Messenger.hxx>
 #include <Message_Printer.hxx>
+#include <STEPControl_Controller.hxx>
 #include <STEPControl_Writer.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopTools_ListOfShape.hxx>
@@ -25,6 +26,7 @@
 #include "support/atomic_file.hpp"
 #include "support/error.hpp"
 #include "support/occt_guard.hpp"
+#include "support/occt_statics.hpp"
 
 namespace sliceform {
 namespace {
@@ -106,13 +108,23 @@ void writeShape(const TopoDS_Shape& shape, const std::string& path) {
         for (TopExp_Explorer e(f.Current(), TopAbs_EDGE); e.More(); e.Next()) edges.Append(e.Current());
         BRepLib::BuildPCurveForEdgesOnPlane(edges, TopoDS::Face(f.Current()));
       }
-      STEPControl_Writer writer;
+      // The writer's settings: AP214, millimetres, and no 2D curves on the planes (readers
+      // rebuild them, and they doubled the file and the time: a mesh's polygon patches have
+      // tens of thousands of edges). The schema is ours too, not the host's: OCCT 7.8.1
+      // crashes writing AP203 (a user's FreeCAD preference). They are process-wide statics,
+      // FreeCAD's own STEP/IGES export settings too: every static is put back as it was when
+      // the writer is done, also when it fails. The writer's controller is set up first, so
+      // its statics are in the snapshot. OCCT 7.8's writer also takes its settings as
+      // parameters (StepData_ConfParameters), but still makes the file's header from the
+      // statics (FILE_SCHEMA said AP203 over AP214 entities), so the statics are set on both.
+      STEPControl_Controller::Init();
+      const StaticsRestorer restoreStatics;
+      Interface_Static::SetCVal("write.step.schema", "AP214CD");
       Interface_Static::SetCVal("write.step.unit", "MM");
-      // No 2D curves on the planes: readers rebuild them, and they doubled the file and the
-      // time (a mesh's polygon patches have tens of thousands of edges).
       Interface_Static::SetIVal("write.surfacecurve.mode", 0);
-      if (writer.Transfer(withCurves, STEPControl_AsIs) != IFSelect_RetDone ||
-          writer.Write(temporary.c_str()) != IFSelect_RetDone)
+      STEPControl_Writer writer;  // after the schema: its model's header is made here
+      const IFSelect_ReturnStatus transferred = writer.Transfer(withCurves, STEPControl_AsIs);
+      if (transferred != IFSelect_RetDone || writer.Write(temporary.c_str()) != IFSelect_RetDone)
         throw Error(ErrorKind::Io, "cannot write " + path);
     });
   });
