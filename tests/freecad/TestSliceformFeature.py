@@ -369,7 +369,7 @@ class TestSliceformFeature(unittest.TestCase):
         settings = native().occt_settings()
         self.assertGreater(len(settings), 20)
         self.assertIn("write.surfacecurve.mode", settings)
-        written = sliceform.Proxy.write_files(layout)["written"]
+        written = sliceform.Proxy.write_files(sliceform, layout)["written"]
         # Every OCCT setting as it was, whichever FreeCAD sets some of them itself.
         self.assertEqual(native().occt_settings(), settings)
         self.assertIn("assembly.step", written)
