@@ -16,7 +16,7 @@ namespace {
 constexpr double kPointsPerMm = 72 / 25.4;
 constexpr double kPageW = 210, kPageH = 297, kMargin = 15;  // A4 portrait, mm
 constexpr int kColumns = 2;
-constexpr int kPictureWidth = 320;  // pixels of a step picture: 80 mm at about 100 dpi
+constexpr int kPictureWidth = 280;  // pixels of a step picture: 80 mm at about 90 dpi
 
 using Surface = std::unique_ptr<cairo_surface_t, decltype(&cairo_surface_destroy)>;
 
