@@ -319,7 +319,7 @@ Run addDesignCommand(CLI::App& app) {
   cmd->add_option("--directions", o->directions,
                   "given: slice along --u and --v; auto: try the model's principal axes and the file's axes, "
                   "each up and the families turned about it, and keep the buildable frame that scores best "
-                  "(report.json lists them; 2-3 times the time of one design)")
+                  "(report.json lists them; 1.5-3 times the time of one design)")
       ->check(CLI::IsMember({"given", "auto"}))
       ->excludes(cmd->get_option("--u"))
       ->excludes(cmd->get_option("--v"))
