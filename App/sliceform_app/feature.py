@@ -202,6 +202,15 @@ class Progress:
         self.bar.stop()
 
 
+def chosen_directions(report):
+    """The frame `directions: auto` chose, as the ChosenDirections result; "given" else."""
+    d = report.get("directions")
+    if not d:
+        return "given"
+    u, v = report["parameters"]["u"], report["parameters"]["v"]
+    return "{} (U {:.3f}, {:.3f}, {:.3f}; V {:.3f}, {:.3f}, {:.3f})".format(d["why"], *u, *v)
+
+
 class Sliceform:
     """Proxy of the Sliceform feature. The design lives in memory only (a few recent ones,
     by a key of the source and the parameters), so a FoldAngle change re-poses the patches
@@ -341,6 +350,7 @@ class Sliceform:
             "Buildable": bool(report["verdict"]["buildable"]),
             "VolumeIoU": float(report["quality"]["volume_iou"]),
             "SheetCount": int(report["sheets"]["count"]),
+            "ChosenDirections": chosen_directions(report),
             "Report": parameters.property_message(summary(report)),
         }
         for name, value in values.items():

@@ -6,6 +6,10 @@ side are the CLI's (`sliceform design --help`)."""
 # (property, FreeCAD type, group, default, core key, tooltip)
 # Enumerations have their choices as default (the first is selected).
 PARAMETERS = (
+    ("Directions", "App::PropertyEnumeration", "Slicing", ["given", "auto"], "directions",
+     "auto (new features): slicing directions chosen for the model (its principal and the file's "
+     "axes, each up, the families turned about it; ChosenDirections says which); given: "
+     "UDirection and VDirection"),
     ("UDirection", "App::PropertyVector", "Slicing", (1.0, 0.0, 0.0), "u",
      "Normal of the U family of patches (global coordinates)"),
     ("VDirection", "App::PropertyVector", "Slicing", (0.0, 1.0, 0.0), "v",
@@ -61,6 +65,8 @@ RESULTS = (
     ("Buildable", "App::PropertyBool", "The design meets every rule of the fabrication contract"),
     ("VolumeIoU", "App::PropertyFloat", "Volume IoU of the sliceform against the source (1 = perfect)"),
     ("SheetCount", "App::PropertyInteger", "Sheets used by the layout"),
+    ("ChosenDirections", "App::PropertyString",
+     "With Directions auto: the frame chosen, its U and V, and why it won"),
     ("Report", "App::PropertyString", "Summary of the last recompute"),
 )
 

@@ -84,7 +84,11 @@ class CreateCommand:
         doc = FreeCAD.ActiveDocument
         source = _selected_solid()
         doc.openTransaction("Create sliceform")
-        obj = feature.makeSliceform(source, doc)
+        # A feature made here chooses its slicing directions for the model (unless the
+        # preference Directions says "given"); made from Python (makeSliceform) it keeps the
+        # property's default, the directions given, as documents from before the property do.
+        directions = FreeCAD.ParamGet(feature.PREFERENCES).GetString("Directions", "auto")
+        obj = feature.makeSliceform(source, doc, Directions="given" if directions == "given" else "auto")
         # Kept even when the design fails: the feature shows the error (FreeCAD reports it
         # once) and can be edited; the source is hidden either way, Delete shows it again.
         source.ViewObject.Visibility = False

@@ -199,3 +199,20 @@ class TestDirectionsInTheBinding(unittest.TestCase):
 
         with self.assertRaises(native().Error):
             native().design({"brep": Part.makeBox(50, 40, 30).exportBrepToString()}, {"directions": "sideways"})
+
+    def test_feature_directions_property(self):
+        from sliceform_app import feature
+
+        doc = FreeCAD.newDocument("Directions")
+        try:
+            box = doc.addObject("Part::Box", "Box")
+            box.Length, box.Width, box.Height = 40, 120, 60
+            doc.recompute()
+            given = feature.makeSliceform(box, Slices=24)
+            self.assertEqual(given.Directions, "given")  # from Python and in older documents
+            self.assertEqual(given.ChosenDirections, "given")
+            chosen = feature.makeSliceform(box, Slices=24, Directions="auto")
+            self.assertIn(" up, ", chosen.ChosenDirections)
+            self.assertTrue(chosen.Buildable, chosen.Report)
+        finally:
+            FreeCAD.closeDocument(doc.Name)

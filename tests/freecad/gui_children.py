@@ -109,6 +109,8 @@ try:
     cut.Base, cut.Tool = box, hole
     doc.recompute()
     FreeCAD.ParamGet("User parameter:BaseApp/Preferences/Mod/Sliceform").SetInt("Slices", 24)
+    # The counts below are the given frame's (Create's own default is auto: gui_smoke.py).
+    FreeCAD.ParamGet("User parameter:BaseApp/Preferences/Mod/Sliceform").SetString("Directions", "given")
     FreeCADGui.Selection.clearSelection()
     FreeCADGui.Selection.addSelection(cut)
     FreeCADGui.runCommand("Sliceform_Create")

@@ -41,6 +41,9 @@ try:
     assert sliceform.isValid(), sliceform.getStatusString()
     assert sliceform.Stable and sliceform.Interlocks == 0, sliceform.Report
     assert sliceform.Slices == 32, "the preference was not used"
+    # A feature made with Create chooses its directions, and says which it chose.
+    assert sliceform.Directions == "auto", sliceform.Directions
+    assert " up, " in sliceform.ChosenDirections and "frames" in sliceform.ChosenDirections, sliceform.ChosenDirections
     assert len(children.patches_of(sliceform)) == sliceform.PatchCount, "patches missing"
     assert children.pages_of(sliceform), "pages missing"
     claimed = sliceform.ViewObject.Proxy.claimChildren()
