@@ -1,7 +1,8 @@
 # SPDX-License-Identifier: LGPL-2.1-or-later
 # GUI test of the Sliceform's children (issue 16), run by gui_smoke.sh inside FreeCAD under
 # Xvfb, through the real commands and dialogs: Create; the task panel's Recompute with a
-# new patch and sheet count, then Cancel, restores the document and the Undo stack; an edit
+# new patch and sheet count, then Cancel, restores the document and the Undo stack, and
+# with OK is one Undo step that takes it all back; an edit
 # of the source as the property editor makes it, lowering the count, is one Undo step;
 # Delete removes the children and shows the source again, Undo brings all back; after
 # save and reopen no TechDraw page opens by itself, nothing is marked for recompute, the
@@ -157,6 +158,30 @@ try:
     after = snapshot(doc, sliceform)
     for key in before:
         assert after[key] == before[key], "Cancel left {} changed: {} -> {}".format(key, before[key], after[key])
+
+    # 1b. The same change kept with OK: one Undo step, which takes it all back.
+    FreeCADGui.Selection.clearSelection()
+    FreeCADGui.Selection.addSelection(sliceform)
+    FreeCADGui.runCommand("Sliceform_Edit")
+    FreeCADGui.updateGui()
+    fields, recompute, _cancel = task_panel_widgets()
+    fields["Slices per direction"].setValue(48)
+    fields["Sheet"].setCurrentIndex(fields["Sheet"].findText("A3"))
+    recompute.click()
+    ok = [b for b in FreeCADGui.getMainWindow().findChildren(QtGui.QDialogButtonBox) if b.isVisible() and
+          b.button(QtGui.QDialogButtonBox.Ok) is not None][-1].button(QtGui.QDialogButtonBox.Ok)
+    ok.click()
+    FreeCADGui.updateGui()
+    kept = snapshot(doc, sliceform)
+    assert kept["results"][:2] == (22, 1) and len(kept["patches"]) == 22, kept["results"][:2]
+    assert kept["touched"] == [], kept["touched"]
+    assert doc.UndoNames == ["Edit sliceform", "Create sliceform"], doc.UndoNames
+    FreeCADGui.runCommand("Std_Undo")
+    doc.recompute()
+    FreeCADGui.updateGui()
+    undone = snapshot(doc, sliceform)
+    for key in ("objects", "views", "patches", "results", "touched"):
+        assert undone[key] == before[key], "Undo of OK: {} {} -> {}".format(key, before[key], undone[key])
 
     # 2. The source edited as the property editor does it, lowering the count.
     FreeCAD.setActiveTransaction("Edit Box Height")
