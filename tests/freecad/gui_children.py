@@ -6,7 +6,8 @@
 # of the source as the property editor makes it, lowering the count, is one Undo step;
 # Delete removes the children and shows the source again, Undo brings all back; after
 # save and reopen no TechDraw page opens by itself, nothing is marked for recompute, the
-# tree shows the children and the Export command works at once. Writes "ok" or the failure to $SLICEFORM_CHILDREN_RESULT.
+# tree shows the children, and the Export command and Show report's "Save report.json..."
+# work at once. Writes "ok" or the failure to $SLICEFORM_CHILDREN_RESULT.
 import os
 import tempfile
 import traceback
@@ -95,7 +96,7 @@ def task_panel_widgets():
 
 
 try:
-    from PySide import QtGui
+    from PySide import QtCore, QtGui
 
     from sliceform_app import children
 
@@ -243,6 +244,35 @@ try:
     assert "sheet-1.dxf" in written and "report.json" in written, written
     touched = [o.Name for o in doc.Objects if "Touched" in o.State]
     assert not touched and doc.UndoNames == [], "Export changed the document: {} {}".format(touched, doc.UndoNames)
+    # Show report, then "Save report.json...", after a reopen (the design is made again).
+    FreeCAD.closeDocument(doc.Name)
+    doc = FreeCAD.openDocument(path)
+    sliceform = doc.getObject("Sliceform")
+    assert sliceform.Proxy.design is None
+    saved = os.path.join(tempfile.mkdtemp(), "report.json")
+    ask_file = QtGui.QFileDialog.getSaveFileName
+    QtGui.QFileDialog.getSaveFileName = staticmethod(lambda *args, **kwargs: (saved, ""))
+
+    def press_save():
+        box = QtGui.QApplication.activeModalWidget()
+        buttons = [b for b in box.buttons() if b.text().startswith("Save report")] if box else []
+        if buttons:
+            buttons[0].click()
+        else:
+            QtCore.QTimer.singleShot(50, press_save)
+
+    QtCore.QTimer.singleShot(50, press_save)
+    try:
+        FreeCADGui.Selection.clearSelection()
+        FreeCADGui.Selection.addSelection(sliceform)
+        FreeCADGui.runCommand("Sliceform_Report")
+    finally:
+        QtGui.QFileDialog.getSaveFileName = ask_file
+    import json
+
+    with open(saved) as f:
+        assert len(json.load(f)["patches"]) == sliceform.PatchCount, "report.json"
+
     wait()
     tree = max(FreeCADGui.getMainWindow().findChildren(QtGui.QTreeWidget), key=lambda t: t.topLevelItemCount())
     item = tree_item(tree, sliceform.Label)
