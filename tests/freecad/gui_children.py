@@ -1,11 +1,13 @@
 # SPDX-License-Identifier: LGPL-2.1-or-later
 # GUI test of the Sliceform's children (issue 16), run by gui_smoke.sh inside FreeCAD under
 # Xvfb, through the real commands and dialogs: Create; the task panel's Recompute with a
-# new patch and sheet count, then Cancel, restores the document and the Undo stack; an edit
+# new patch and sheet count, then Cancel, restores the document and the Undo stack, and
+# with OK is one Undo step that takes it all back; an edit
 # of the source as the property editor makes it, lowering the count, is one Undo step;
 # Delete removes the children and shows the source again, Undo brings all back; after
 # save and reopen no TechDraw page opens by itself, nothing is marked for recompute, the
-# tree shows the children and the Export command works at once. Writes "ok" or the failure to $SLICEFORM_CHILDREN_RESULT.
+# tree shows the children, and the Export command and Show report's "Save report.json..."
+# work at once. Writes "ok" or the failure to $SLICEFORM_CHILDREN_RESULT.
 import os
 import tempfile
 import traceback
@@ -94,7 +96,7 @@ def task_panel_widgets():
 
 
 try:
-    from PySide import QtGui
+    from PySide import QtCore, QtGui
 
     from sliceform_app import children
 
@@ -160,6 +162,30 @@ try:
     for key in before:
         assert after[key] == before[key], "Cancel left {} changed: {} -> {}".format(key, before[key], after[key])
 
+    # 1b. The same change kept with OK: one Undo step, which takes it all back.
+    FreeCADGui.Selection.clearSelection()
+    FreeCADGui.Selection.addSelection(sliceform)
+    FreeCADGui.runCommand("Sliceform_Edit")
+    FreeCADGui.updateGui()
+    fields, recompute, _cancel = task_panel_widgets()
+    fields["Slices per direction"].setValue(48)
+    fields["Sheet"].setCurrentIndex(fields["Sheet"].findText("A3"))
+    recompute.click()
+    ok = [b for b in FreeCADGui.getMainWindow().findChildren(QtGui.QDialogButtonBox) if b.isVisible() and
+          b.button(QtGui.QDialogButtonBox.Ok) is not None][-1].button(QtGui.QDialogButtonBox.Ok)
+    ok.click()
+    FreeCADGui.updateGui()
+    kept = snapshot(doc, sliceform)
+    assert kept["results"][:2] == (22, 1) and len(kept["patches"]) == 22, kept["results"][:2]
+    assert kept["touched"] == [], kept["touched"]
+    assert doc.UndoNames == ["Edit sliceform", "Create sliceform"], doc.UndoNames
+    FreeCADGui.runCommand("Std_Undo")
+    doc.recompute()
+    FreeCADGui.updateGui()
+    undone = snapshot(doc, sliceform)
+    for key in ("objects", "views", "patches", "results", "touched"):
+        assert undone[key] == before[key], "Undo of OK: {} {} -> {}".format(key, before[key], undone[key])
+
     # 2. The source edited as the property editor does it, lowering the count.
     FreeCAD.setActiveTransaction("Edit Box Height")
     box.Height = 100
@@ -220,6 +246,35 @@ try:
     assert "sheet-1.dxf" in written and "report.json" in written, written
     touched = [o.Name for o in doc.Objects if "Touched" in o.State]
     assert not touched and doc.UndoNames == [], "Export changed the document: {} {}".format(touched, doc.UndoNames)
+    # Show report, then "Save report.json...", after a reopen (the design is made again).
+    FreeCAD.closeDocument(doc.Name)
+    doc = FreeCAD.openDocument(path)
+    sliceform = doc.getObject("Sliceform")
+    assert sliceform.Proxy.design is None
+    saved = os.path.join(tempfile.mkdtemp(), "report.json")
+    ask_file = QtGui.QFileDialog.getSaveFileName
+    QtGui.QFileDialog.getSaveFileName = staticmethod(lambda *args, **kwargs: (saved, ""))
+
+    def press_save():
+        box = QtGui.QApplication.activeModalWidget()
+        buttons = [b for b in box.buttons() if b.text().startswith("Save report")] if box else []
+        if buttons:
+            buttons[0].click()
+        else:
+            QtCore.QTimer.singleShot(50, press_save)
+
+    QtCore.QTimer.singleShot(50, press_save)
+    try:
+        FreeCADGui.Selection.clearSelection()
+        FreeCADGui.Selection.addSelection(sliceform)
+        FreeCADGui.runCommand("Sliceform_Report")
+    finally:
+        QtGui.QFileDialog.getSaveFileName = ask_file
+    import json
+
+    with open(saved) as f:
+        assert len(json.load(f)["patches"]) == sliceform.PatchCount, "report.json"
+
     wait()
     tree = max(FreeCADGui.getMainWindow().findChildren(QtGui.QTreeWidget), key=lambda t: t.topLevelItemCount())
     item = tree_item(tree, sliceform.Label)
