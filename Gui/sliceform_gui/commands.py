@@ -223,11 +223,44 @@ class ReportCommand:
                     f.write(report)
 
 
+class AssemblyStepsCommand:
+    """Steps through the selected sliceform's assembly order in the 3D view."""
+
+    def GetResources(self):
+        from PySide.QtCore import QT_TRANSLATE_NOOP
+
+        return {
+            "Pixmap": icon_path("Sliceform_Steps.svg"),
+            "MenuText": QT_TRANSLATE_NOOP("Sliceform_AssemblySteps", "Assembly steps"),
+            "ToolTip": QT_TRANSLATE_NOOP(
+                "Sliceform_AssemblySteps",
+                "Step through the selected sliceform's assembly order: the patches placed so far, the "
+                "new one in orange, and the partners its slots go onto (a display mode: the document "
+                "is not changed)",
+            ),
+        }
+
+    def IsActive(self):
+        return _selected_sliceform() is not None and not FreeCADGui.Control.activeDialog()
+
+    def Activated(self):
+        from sliceform_gui import assembly_steps
+
+        obj = _selected_sliceform()
+        try:
+            panel = assembly_steps.AssemblyStepsPanel(obj)
+        except Exception as e:
+            _error(e)
+            return
+        FreeCADGui.Control.showDialog(panel)
+
+
 COMMANDS = {
     "Sliceform_Create": CreateCommand,
     "Sliceform_Edit": EditCommand,
     "Sliceform_Export": ExportCommand,
     "Sliceform_Fold": FoldCommand,
+    "Sliceform_AssemblySteps": AssemblyStepsCommand,
     "Sliceform_Report": ReportCommand,
     "Sliceform_Slices": SlicesCommand,
 }

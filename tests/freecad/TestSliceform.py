@@ -216,3 +216,22 @@ class TestDirectionsInTheBinding(unittest.TestCase):
             self.assertTrue(chosen.Buildable, chosen.Report)
         finally:
             FreeCAD.closeDocument(doc.Name)
+
+
+class TestAssemblySteps(unittest.TestCase):
+    def test_steps_follow_the_assembly_order_and_name_placed_partners(self):
+        import json
+
+        from sliceform_app import assembly_steps, native
+
+        torus = Part.makeTorus(40, 12)
+        report = json.loads(native().design({"brep": torus.exportBrepToString()}, {"slices": 32}).report_json())
+        steps = assembly_steps.steps(report)
+        self.assertEqual([pid for pid, _ in steps], report["assembly_order"])
+        self.assertIn("upright", steps[0][1])
+        placed = set()
+        for pid, text in steps:
+            named = set(t.strip(",.;") for t in text.split(": ", 2)[2].split() if t[:1] in "UV" and t[1:2].isdigit())
+            self.assertTrue(named <= placed, (pid, named - placed))  # only partners already there
+            placed.add(pid)
+        self.assertTrue(any("onto" in text for _, text in steps[1:]))

@@ -18,7 +18,8 @@ try:
     assert "SliceformWorkbench" in FreeCADGui.listWorkbenches(), "workbench not listed"
     FreeCADGui.activateWorkbench("SliceformWorkbench")
     assert FreeCADGui.activeWorkbench().name() == "SliceformWorkbench", "workbench not active"
-    for name in ("Sliceform_Create", "Sliceform_Edit", "Sliceform_Export", "Sliceform_Fold", "Sliceform_Report"):
+    for name in ("Sliceform_Create", "Sliceform_Edit", "Sliceform_Export", "Sliceform_Fold", "Sliceform_Report",
+                 "Sliceform_AssemblySteps"):
         assert name in FreeCADGui.listCommands(), name + " not registered"
     # Small designs keep the test quick: the preferences page's default for new sliceforms.
     FreeCAD.ParamGet("User parameter:BaseApp/Preferences/Mod/Sliceform").SetInt("Slices", 32)
@@ -57,6 +58,34 @@ try:
     assert dialog, "the task panel did not open"
     FreeCADGui.Control.closeDialog()
     FreeCADGui.ActiveDocument.resetEdit()
+
+    # Assembly steps: a display mode. Step 3 shows the first three patches in assembly order,
+    # the third in orange; closing puts every visibility and colour back; no Undo step.
+    from sliceform_gui import assembly_steps
+
+    FreeCADGui.Selection.clearSelection()
+    FreeCADGui.Selection.addSelection(sliceform)
+    undo_before = list(doc.UndoNames)
+    patches = {p.PatchId: p for p in children.patches_of(sliceform)}
+    before = {p.Name: (p.ViewObject.Visibility, tuple(p.ViewObject.ShapeColor)) for p in patches.values()}
+    FreeCADGui.runCommand("Sliceform_AssemblySteps")
+    panel = assembly_steps.current
+    assert panel is not None and FreeCADGui.Control.activeDialog(), "the assembly steps did not open"
+    panel.next.click()
+    panel.next.click()
+    order = [pid for pid, _ in panel.steps]
+    assert len(order) == sliceform.PatchCount, (len(order), sliceform.PatchCount)
+    shown = [pid for pid, p in patches.items() if p.ViewObject.Visibility]
+    assert sorted(shown) == sorted(order[:3]), (shown, order[:3])
+    colour = tuple(patches[order[2]].ViewObject.ShapeColor)[:3]
+    assert all(abs(a - b) < 1e-3 for a, b in zip(colour, assembly_steps.HIGHLIGHT)), ("no highlight", colour)
+    assert "Step 3 of" in panel.label.text() and order[2] in panel.label.text(), panel.label.text()
+    assert not sliceform.ViewObject.Visibility, "the assembled sliceform hides the steps"
+    panel.reject()
+    after = {p.Name: (p.ViewObject.Visibility, tuple(p.ViewObject.ShapeColor)) for p in patches.values()}
+    assert after == before, "the steps changed the display for good"
+    assert sliceform.ViewObject.Visibility, "the sliceform was not shown again"
+    assert list(doc.UndoNames) == undo_before, doc.UndoNames
 
     # The 3D view: the sliceform beside its source.
     FreeCADGui.Selection.clearSelection()
