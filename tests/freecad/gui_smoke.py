@@ -42,6 +42,11 @@ try:
     assert sliceform.isValid(), sliceform.getStatusString()
     assert sliceform.Stable and sliceform.Interlocks == 0, sliceform.Report
     assert sliceform.Slices == 32, "the preference was not used"
+    # Create goes through the Python console, so a recorded macro repeats it.
+    console = [w for w in FreeCADGui.getMainWindow().findChildren(QtGui.QPlainTextEdit)
+               if w.objectName() == "Python console"]
+    assert console and "sliceform_app.feature.makeSliceform(" in console[0].toPlainText(), \
+        "Create did not go through the console"
     # A feature made with Create chooses its directions, and says which it chose.
     assert sliceform.Directions == "auto", sliceform.Directions
     assert " up, " in sliceform.ChosenDirections and "frames" in sliceform.ChosenDirections, sliceform.ChosenDirections
@@ -86,6 +91,44 @@ try:
     assert after == before, "the steps changed the display for good"
     assert sliceform.ViewObject.Visibility, "the sliceform was not shown again"
     assert list(doc.UndoNames) == undo_before, doc.UndoNames
+
+    # Fold animation: it ends by itself with the angle put back; the command again stops it.
+    # (How long it takes is measured, not asserted: bench/ measures speed.)
+    import time
+
+    from sliceform_gui import commands as sliceform_commands
+
+    FreeCADGui.Selection.clearSelection()
+    FreeCADGui.Selection.addSelection(sliceform)
+    angle = float(sliceform.FoldAngle.Value)
+    FreeCADGui.runCommand("Sliceform_Fold")
+    animation = [c for c in sliceform_commands.COMMANDS_MADE if isinstance(c, sliceform_commands.FoldCommand)][0]
+    began, seen = time.monotonic(), set()
+    while animation.running() and time.monotonic() - began < 20:
+        seen.add(round(float(sliceform.FoldAngle.Value)))
+        QtGui.QApplication.processEvents()
+    # Written beside the screenshot, for the closing note (not asserted).
+    with open(png.replace(".png", "_measured.txt"), "w") as f:
+        f.write("fold animation: {:.2f} s, {} angles seen, {} patches\n".format(
+            time.monotonic() - began, len(seen), sliceform.PatchCount))
+
+    assert not animation.running(), "the fold animation did not end"
+    assert abs(float(sliceform.FoldAngle.Value) - angle) < 1e-9, "the angle was not put back"
+    assert min(seen) < 60, ("it did not fold", sorted(seen))
+    FreeCADGui.runCommand("Sliceform_Fold")
+    for _ in range(3):
+        QtGui.QApplication.processEvents()
+    assert animation.running()
+    FreeCADGui.runCommand("Sliceform_Fold")  # again: stops it
+    assert not animation.running(), "the command again did not stop it"
+    assert abs(float(sliceform.FoldAngle.Value) - angle) < 1e-9, "the angle was not put back after a stop"
+
+
+    # The preferences page finds its icon by name (FreeCAD looks up "preferences-<page>").
+    # (A name it cannot find gives its "missing" picture, not a null icon: compare with it.)
+    found = FreeCADGui.getIcon("preferences-sliceform").pixmap(32, 32).toImage()
+    missing = FreeCADGui.getIcon("preferences-no-such-page").pixmap(32, 32).toImage()
+    assert not found.isNull() and found != missing, "no preferences icon"
 
     # The 3D view: the sliceform beside its source.
     FreeCADGui.Selection.clearSelection()
