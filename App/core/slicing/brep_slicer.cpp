@@ -20,11 +20,16 @@
 #include <gp_Ax3.hxx>
 #include <gp_Pln.hxx>
 
+#include <Standard_Failure.hxx>
+
 #include <algorithm>
+#include <cstdio>
+#include <cstdlib>
 #include <cmath>
 #include <sstream>
 #include <thread>
 
+#include "slicing/section_faces.hpp"
 #include "support/error.hpp"
 #include "support/occt_guard.hpp"
 #include "support/parallel.hpp"
@@ -60,9 +65,9 @@ Region2d::Loop polygoniseWire(const TopoDS_Wire& wire, const TopoDS_Face& face, 
 // Several planes are cut in one Boolean: its set-up (the solid's own edges and faces, their
 // boxes) is then paid once per batch instead of once per plane, 1.5x faster on
 // step/screw.step. The planes are parallel, so the cutters never meet each other.
-std::vector<ExactSlice> sliceBatch(const std::vector<TopoDS_Shape>& solids, const SliceFrame& frame,
-                                   const std::vector<double>& positions, const gp_Pnt& centre,
-                                   double halfSize, double deflection, SliceDetail detail) {
+std::vector<TopoDS_Shape> commonFaces(const std::vector<TopoDS_Shape>& solids, const SliceFrame& frame,
+                                      const std::vector<double>& positions, const gp_Pnt& centre,
+                                      double halfSize) {
   TopoDS_Compound cutters;
   BRep_Builder builder;
   builder.MakeCompound(cutters);
@@ -111,13 +116,45 @@ std::vector<ExactSlice> sliceBatch(const std::vector<TopoDS_Shape>& solids, cons
       any[nearest] = true;
     }
   }
+  std::vector<TopoDS_Shape> out(positions.size());
+  for (size_t k = 0; k < positions.size(); ++k)
+    if (any[k]) out[k] = faces[k];
+  return out;
+}
+
+// One batch of planes: by section curves where that route is sure of its faces, by the
+// Common elsewhere.
+std::vector<ExactSlice> sliceBatch(const std::vector<TopoDS_Shape>& solids, const SliceFrame& frame,
+                                   const std::vector<double>& positions, const gp_Pnt& centre,
+                                   double halfSize, double deflection, SliceDetail detail, SectionRoute route) {
+  std::vector<std::optional<TopoDS_Shape>> made(positions.size());
+  if (route == SectionRoute::Curves) {
+    try {
+      made = sectionFaces(solids, frame, positions, centre, halfSize, deflection);
+    } catch (const Standard_Failure&) {
+      // The Common below makes every plane of the batch.
+    }
+  }
+  std::vector<bool> byCurves(positions.size());
+  std::vector<double> rest;
+  for (size_t k = 0; k < positions.size(); ++k) {
+    byCurves[k] = made[k].has_value();
+    if (!made[k]) rest.push_back(positions[k]);
+  }
+  if (std::getenv("SLICEFORM_DEBUG_SECTIONS"))
+    fprintf(stderr, "sections: %zu of %zu by the Common\n", rest.size(), positions.size());
+  if (!rest.empty()) {
+    const std::vector<TopoDS_Shape> cut = commonFaces(solids, frame, rest, centre, halfSize);
+    for (size_t k = 0, i = 0; k < positions.size(); ++k)
+      if (!made[k]) made[k] = cut[i++];
+  }
   std::vector<ExactSlice> out(positions.size());
   for (size_t k = 0; k < positions.size(); ++k) {
     ExactSlice& slice = out[k];
     slice.position = positions[k];
-    if (!any[k]) continue;
-    slice.faces = faces[k];
-    if (detail == SliceDetail::FacesOnly) continue;
+    slice.faces = *made[k];
+    slice.route = k < byCurves.size() && byCurves[k] ? SectionRoute::Curves : SectionRoute::Common;
+    if (slice.faces.IsNull() || detail == SliceDetail::FacesOnly) continue;
     GProp_GProps props;
     // With a relative precision, the adaptive integration: the default fixed-order one was
     // 1.6% off on a face with a B-spline edge (occ/Pump_TopCover.brep: 4512 for 4587 mm²).
@@ -145,7 +182,7 @@ Region2d polygoniseFaces(const TopoDS_Shape& faces, const SliceFrame& frame, dou
 
 std::vector<ExactSlice> sliceBrep(const TopoDS_Shape& solid, const SliceFrame& frame,
                                   const std::vector<double>& positions, double deflection,
-                                  SliceDetail detail) {
+                                  SliceDetail detail, SectionRoute route) {
   if (!(deflection > 0)) throw Error(ErrorKind::BadParameter, "the polygon deflection must be positive");
   Bnd_Box box;
   occtGuard("measuring the shape", [&] { BRepBndLib::Add(solid, box); });
@@ -172,7 +209,7 @@ std::vector<ExactSlice> sliceBrep(const TopoDS_Shape& solid, const SliceFrame& f
     const size_t first = b * batch, last = std::min(positions.size(), first + batch);
     const std::vector<double> some(positions.begin() + first, positions.begin() + last);
     const std::vector<ExactSlice> cut = occtGuard("cutting sections", [&] {
-      return sliceBatch(solids, frame, some, centre, halfSize, deflection, detail);
+      return sliceBatch(solids, frame, some, centre, halfSize, deflection, detail, route);
     });
     std::copy(cut.begin(), cut.end(), slices.begin() + first);
   });
