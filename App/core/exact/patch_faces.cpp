@@ -21,10 +21,8 @@
 #include <gp_Pln.hxx>
 
 #include <algorithm>
-#include <chrono>
-#include <cstdio>
-#include <cstdlib>
 #include <map>
+#include <optional>
 #include <sstream>
 
 #include "geometry/simplify.hpp"
@@ -179,7 +177,6 @@ TopoDS_Shape exactSection(const Cylinder& cylinder, const std::vector<int>& chos
   }
   std::vector<TopoDS_Shape> own;
   for (const size_t k : sectionsAddingToUnion(polygons, 2 * deflection)) own.push_back(candidates[k]);
-  if (std::getenv("SLICEFORM_DEBUG_SECTIONS")) fprintf(stderr, "cylinder: %d slices, %zu faces, %zu kept\n", cylinder.lastSlice - cylinder.firstSlice + 1, candidates.size(), own.size());
   TopoDS_Shape fused = own.size() > 1 ? boolean({own.front()}, {own.begin() + 1, own.end()}, false)
                                       : (own.empty() ? TopoDS_Shape() : own.front());
   // Material of the polygon section the exact slices lack (merged-in branches): keep it, as
@@ -236,7 +233,7 @@ std::vector<PatchFace> exactPatches(const Model& model, const Arrangement& a, co
   // Exact sections, each needed slice cut once.
   std::map<int, ExactSlice> uSlices, vSlices;
   std::map<std::pair<int, int>, TopoDS_Shape> sections;  // (family, cylinder) at position 0
-  std::vector<std::pair<int, int>> keys;                  // (family, cylinder) of every patch
+  std::vector<std::pair<int, int>> keys;                 // (family, cylinder) of every patch
   for (const ScaffoldPatch& p : scaffold.patches) keys.push_back({p.family == Family::U ? 0 : 1, p.cylinder});
   std::sort(keys.begin(), keys.end());
   keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
@@ -247,41 +244,44 @@ std::vector<PatchFace> exactPatches(const Model& model, const Arrangement& a, co
       chosen[i] = slicesAddingToUnion((isU ? a.uCylinders : a.vCylinders)[keys[i].second], isU ? a.u : a.v,
                                       model.meshDeflection);
     });
-  auto T0 = std::chrono::steady_clock::now();
-  auto lap = [&](const char* what) {
-    if (!std::getenv("SLICEFORM_DEBUG_SECTIONS")) return;
-    auto now = std::chrono::steady_clock::now();
-    fprintf(stderr, "exact: %s %.1f ms\n", what, std::chrono::duration<double, std::milli>(now - T0).count());
-    T0 = now;
-  };
   if (exact) {
     for (const Family f : {Family::U, Family::V}) {
       const SliceSet& set = f == Family::U ? a.u : a.v;
       std::vector<int> needed;
       for (size_t i = 0; i < keys.size(); ++i)
-        if ((keys[i].first == 0) == (f == Family::U)) needed.insert(needed.end(), chosen[i].begin(), chosen[i].end());
+        if ((keys[i].first == 0) == (f == Family::U))
+          needed.insert(needed.end(), chosen[i].begin(), chosen[i].end());
       std::sort(needed.begin(), needed.end());
       needed.erase(std::unique(needed.begin(), needed.end()), needed.end());
       std::vector<double> positions;
       for (int k : needed) positions.push_back(set.slices[k].position);
-      const std::vector<ExactSlice> cut = sliceBrep(
-          model.shape, set.frame, positions, exactDeflection(model.meshDeflection), SliceDetail::FacesOnly,
-          std::getenv("SLICEFORM_ROUTE_COMMON") ? SectionRoute::Common : SectionRoute::Curves);
+      // Where OCCT fails, the patches are emitted as the polygons the search checked (below:
+      // a cylinder without its exact section, a patch whose slots cannot be cut).
+      std::vector<ExactSlice> cut;
+      try {
+        cut = sliceBrep(model.shape, set.frame, positions, exactDeflection(model.meshDeflection),
+                        SliceDetail::FacesOnly);
+      } catch (const Error&) {
+        continue;
+      }
       auto& into = f == Family::U ? uSlices : vSlices;
       for (size_t i = 0; i < needed.size(); ++i) into[needed[i]] = cut[i];
     }
-    lap("sections");
-    std::vector<TopoDS_Shape> built(keys.size());
+    std::vector<std::optional<TopoDS_Shape>> built(keys.size());
     parallelFor(keys.size(), [&](size_t i) {
       const bool isU = keys[i].first == 0;
       const Cylinder& c = (isU ? a.uCylinders : a.vCylinders)[keys[i].second];
-      built[i] = occtGuard("building an exact patch", [&] {
-        return exactSection(c, chosen[i], isU ? uSlices : vSlices, isU ? a.u.frame : a.v.frame,
-                            model.meshDeflection);
-      });
+      try {
+        built[i] = occtGuard("building an exact patch", [&] {
+          return exactSection(c, chosen[i], isU ? uSlices : vSlices, isU ? a.u.frame : a.v.frame,
+                              model.meshDeflection);
+        });
+      } catch (const Error&) {
+        built[i].reset();  // a slice missing (its family's sections failed), or a fuse failed
+      }
     });
-    for (size_t i = 0; i < keys.size(); ++i) sections[keys[i]] = built[i];
-    lap("cylinders");
+    for (size_t i = 0; i < keys.size(); ++i)
+      if (built[i]) sections[keys[i]] = *built[i];
   }
 
   const double crumb = std::max(0.5, r.params.width() * r.params.width());
@@ -293,24 +293,31 @@ std::vector<PatchFace> exactPatches(const Model& model, const Arrangement& a, co
       pf = polygonPatch(a, r, static_cast<int>(k));
       return;
     }
+    const auto section0 = sections.find({p.family == Family::U ? 0 : 1, p.cylinder});
+    if (section0 == sections.end()) {
+      pf = polygonPatch(a, r, static_cast<int>(k), false);
+      return;
+    }
     pf.exact = true;
-    occtGuard("cutting the slots of a patch", [&] {
-      gp_Trsf onto;
-      onto.SetTranslation(
-          gp_Vec(frame.normal.x * p.position, frame.normal.y * p.position, frame.normal.z * p.position));
-      const TopoDS_Shape section =
-          sections.at({p.family == Family::U ? 0 : 1, p.cylinder}).Moved(TopLoc_Location(onto));
-      const std::vector<TopoDS_Shape> tools = slotFaces(slotShapes(r.cuts[k], r.params), frame, p.position);
-      const TopoDS_Shape slotted = tools.empty() ? section : boolean(faces(section), tools, true);
-      std::vector<TopoDS_Shape> kept;
-      for (const TopoDS_Shape& f : faces(slotted))
-        if (area(f) >= crumb) kept.push_back(f);
-      pf.pieces = static_cast<int>(kept.size());
-      pf.shape = kept.size() == 1 ? kept.front() : compound(kept);
-      pf.outline = polygoniseFaces(pf.shape, frame, kOutlineDeflection);
-    });
+    try {
+      occtGuard("cutting the slots of a patch", [&] {
+        gp_Trsf onto;
+        onto.SetTranslation(
+            gp_Vec(frame.normal.x * p.position, frame.normal.y * p.position, frame.normal.z * p.position));
+        const TopoDS_Shape section = section0->second.Moved(TopLoc_Location(onto));
+        const std::vector<TopoDS_Shape> tools = slotFaces(slotShapes(r.cuts[k], r.params), frame, p.position);
+        const TopoDS_Shape slotted = tools.empty() ? section : boolean(faces(section), tools, true);
+        std::vector<TopoDS_Shape> kept;
+        for (const TopoDS_Shape& f : faces(slotted))
+          if (area(f) >= crumb) kept.push_back(f);
+        pf.pieces = static_cast<int>(kept.size());
+        pf.shape = kept.size() == 1 ? kept.front() : compound(kept);
+        pf.outline = polygoniseFaces(pf.shape, frame, kOutlineDeflection);
+      });
+    } catch (const Error&) {
+      pf = polygonPatch(a, r, static_cast<int>(k), false);
+    }
   });
-  lap("slots");
   return out;
 }
 

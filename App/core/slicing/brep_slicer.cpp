@@ -23,8 +23,6 @@
 #include <Standard_Failure.hxx>
 
 #include <algorithm>
-#include <cstdio>
-#include <cstdlib>
 #include <cmath>
 #include <sstream>
 #include <thread>
@@ -126,7 +124,8 @@ std::vector<TopoDS_Shape> commonFaces(const std::vector<TopoDS_Shape>& solids, c
 // Common elsewhere.
 std::vector<ExactSlice> sliceBatch(const std::vector<TopoDS_Shape>& solids, const SliceFrame& frame,
                                    const std::vector<double>& positions, const gp_Pnt& centre,
-                                   double halfSize, double deflection, SliceDetail detail, SectionRoute route) {
+                                   double halfSize, double deflection, SliceDetail detail,
+                                   SectionRoute route) {
   std::vector<std::optional<TopoDS_Shape>> made(positions.size());
   if (route == SectionRoute::Curves) {
     try {
@@ -141,8 +140,6 @@ std::vector<ExactSlice> sliceBatch(const std::vector<TopoDS_Shape>& solids, cons
     byCurves[k] = made[k].has_value();
     if (!made[k]) rest.push_back(positions[k]);
   }
-  if (std::getenv("SLICEFORM_DEBUG_SECTIONS"))
-    fprintf(stderr, "sections: %zu of %zu by the Common\n", rest.size(), positions.size());
   if (!rest.empty()) {
     const std::vector<TopoDS_Shape> cut = commonFaces(solids, frame, rest, centre, halfSize);
     for (size_t k = 0, i = 0; k < positions.size(); ++k)
@@ -181,8 +178,8 @@ Region2d polygoniseFaces(const TopoDS_Shape& faces, const SliceFrame& frame, dou
 }
 
 std::vector<ExactSlice> sliceBrep(const TopoDS_Shape& solid, const SliceFrame& frame,
-                                  const std::vector<double>& positions, double deflection,
-                                  SliceDetail detail, SectionRoute route) {
+                                  const std::vector<double>& positions, double deflection, SliceDetail detail,
+                                  SectionRoute route) {
   if (!(deflection > 0)) throw Error(ErrorKind::BadParameter, "the polygon deflection must be positive");
   Bnd_Box box;
   occtGuard("measuring the shape", [&] { BRepBndLib::Add(solid, box); });
