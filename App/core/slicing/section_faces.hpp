@@ -4,8 +4,8 @@
 // the curves are chained into closed loops, the loops nested by their polygons (even depth
 // = outline, odd = hole), and each face is made on the plane from its exact wires. A plane
 // is left to the caller (the Boolean Common, slower but whole) wherever this route is in
-// doubt: a chain that does not close, a face OCCT cannot make, a face whose area is not its
-// polygon's.
+// doubt: a chain that does not close, a face OCCT cannot make, loops whose even-odd area is
+// not their nested area (loops that cross, a wrong parent).
 #pragma once
 
 #include <TopoDS_Shape.hxx>
