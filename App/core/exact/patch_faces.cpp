@@ -163,7 +163,9 @@ TopoDS_Shape exactSection(const Cylinder& cylinder, const std::vector<int>& chos
   std::vector<TopoDS_Shape> candidates;
   std::vector<Region2d> polygons;
   for (const int k : chosen) {
-    const ExactSlice& s = slices.at(k);
+    const auto slice = slices.find(k);
+    if (slice == slices.end()) throw Error(ErrorKind::Geometry, "an exact section was not cut");
+    const ExactSlice& s = slice->second;
     if (s.faces.IsNull()) continue;
     gp_Trsf onto;
     onto.SetTranslation(
