@@ -253,5 +253,46 @@ TEST(BrepSlicer, PlaneMissingTheSolidGivesNothing) {
   }
 }
 
+// The section-curve route (slicing/section_faces.hpp) on solids with holes and a void: every
+// plane is made by it, not by the Common it falls back to, its faces have the Common's areas
+// and holes, and the mesh's polygon sections within the mesh deflection along the outline.
+TEST(BrepSlicer, SectionCurvesMakeTheFacesOfSolidsWithHoles) {
+  const double d = 0.01;
+  struct Case {
+    const char* name;
+    TopoDS_Shape shape;
+    Vec3 normal;
+  } cases[] = {{"holed box along the holes", holedBox(), {0, 0, 1}},
+               {"holed box across", holedBox(), {1, 0.2, 0}},
+               {"hollow sphere", test::makeHollowSphere(10, 6), {0, 1, 1}},
+               {"torus", test::makeTorus(10, 3), {0, 0, 1}}};
+  for (const Case& c : cases) {
+    SCOPED_TRACE(c.name);
+    const Model model = modelFromShape(c.shape, c.name, d);
+    const SliceFrame frame = makeSliceFrame(c.normal);
+    const Interval range = model.mesh.extent(frame.normal);
+    const std::vector<double> positions = uniformPositions(range.lo, range.hi, 9);
+    const std::vector<ExactSlice> curves =
+        sliceBrep(model.shape, frame, positions, d / 10, SliceDetail::Measured, SectionRoute::Curves);
+    const std::vector<ExactSlice> common =
+        sliceBrep(model.shape, frame, positions, d / 10, SliceDetail::Measured, SectionRoute::Common);
+    const SliceSet mesh = sliceMesh(model.mesh, frame, positions);
+    size_t nested = 0;  // holes and outlines beside another
+    for (size_t i = 0; i < positions.size(); ++i) {
+      const ExactSlice& s = curves[i];
+      EXPECT_EQ(s.route, SectionRoute::Curves) << "at " << positions[i];
+      EXPECT_EQ(common[i].route, SectionRoute::Common);
+      ASSERT_FALSE(s.faces.IsNull()) << "at " << positions[i];
+      EXPECT_NEAR(s.area, common[i].area, 1e-7 * common[i].area) << "at " << positions[i];
+      EXPECT_EQ(s.region.holeCount(), common[i].region.holeCount()) << "at " << positions[i];
+      EXPECT_EQ(s.region.components().size(), common[i].region.components().size());
+      // The mesh lies within d of the surface: its section within d of the exact one.
+      EXPECT_NEAR(mesh.slices[i].region.area(), s.area, perimeter(s.faces) * d) << "at " << positions[i];
+      nested += s.region.holeCount() + s.region.components().size() - 1;
+    }
+    EXPECT_GT(nested, 0u);  // the nesting was tested
+  }
+}
+
 }  // namespace
 }  // namespace sliceform

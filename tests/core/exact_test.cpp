@@ -14,6 +14,7 @@
 #include <TopExp_Explorer.hxx>
 #include <TopoDS.hxx>
 
+#include <cmath>
 #include <fstream>
 #include <iterator>
 
@@ -116,6 +117,42 @@ TEST(ExactPatches, SphereKeepsCircularArcsAndSlotWidth) {
     }
   }
   EXPECT_GT(slotsMeasured, 4);
+}
+
+// Exact patches of a solid with holes, made from section curves: each has the area of the
+// slotted polygon the search checked (within the mesh deflection along its outline), and
+// every slot the search cut, thickness + clearance wide, is in the exact face.
+TEST(ExactPatches, SlottedFacesFromSectionCurvesHaveEverySlot) {
+  const std::vector<test::Hole> holes{{30, 40, 12}, {85, 35, 9}};
+  const Design d = design(modelFromShape(test::makeBoxWithHoles(120, 80, 60, holes), "box with holes"));
+  ASSERT_FALSE(d.faces.empty());
+  const SlotParams params;
+  int slots = 0;
+  for (size_t k = 0; k < d.faces.size(); ++k) {
+    SCOPED_TRACE("patch " + std::to_string(k));
+    const PatchFace& f = d.faces[k];
+    EXPECT_TRUE(f.exact);
+    EXPECT_EQ(f.pieces, 1);
+    double outline = 0;
+    for (const Region2d::Loop& loop : f.outline.loops())
+      for (size_t i = 0, j = loop.size() - 1; i < loop.size(); j = i++)
+        outline += std::hypot(loop[i].x - loop[j].x, loop[i].y - loop[j].y);
+    EXPECT_NEAR(f.outline.area(), d.realization.slotted[k].area(), outline * d.model.meshDeflection + 1e-6);
+    int expected = 0, found = 0;
+    for (const SlotCut& c : d.realization.cuts[k]) {
+      if (c.y.hi - c.y.lo < 2) continue;
+      ++expected;
+      // Halfway along the slot, the paper has a gap of the slot's width around its line.
+      const auto row = f.outline.intervalsOnLine({0, (c.y.lo + c.y.hi) / 2}, {1, 0});
+      for (size_t i = 0; i + 1 < row.size(); ++i)
+        if (row[i].hi <= c.x && c.x <= row[i + 1].lo &&
+            std::abs(row[i + 1].lo - row[i].hi - params.width()) < 1e-3)
+          ++found;
+    }
+    EXPECT_EQ(found, expected);
+    slots += found;
+  }
+  EXPECT_GT(slots, 8);
 }
 
 // Mesh sources keep their polygons: one planar face per patch, holes included.

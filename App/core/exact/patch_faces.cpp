@@ -22,6 +22,7 @@
 
 #include <algorithm>
 #include <map>
+#include <optional>
 #include <sstream>
 
 #include "geometry/simplify.hpp"
@@ -123,16 +124,48 @@ std::vector<TopoDS_Shape> slotFaces(const SlotShapes& shapes, const SliceFrame& 
   return out;
 }
 
-// The exact cross-section of one cylinder on the plane at position 0 of its frame.
-TopoDS_Shape exactSection(const Cylinder& cylinder, const std::map<int, ExactSlice>& slices,
-                          const SliceFrame& frame, double meshDeflection) {
-  const double deflection = exactDeflection(meshDeflection);
-  // The cylinder's own faces: a slice may hold pieces of other parts of the model.
-  const Region2d near = cylinder.section.offset(std::max(4 * meshDeflection, 0.05));
-  std::vector<TopoDS_Shape> candidates;
+// What lies near a cylinder's section: its own pieces of a slice, which may hold pieces of
+// other parts of the model.
+Region2d nearCylinder(const Cylinder& cylinder, double meshDeflection) {
+  return cylinder.section.offset(std::max(4 * meshDeflection, 0.05));
+}
+
+// The slices of a cylinder whose sections add to its union, chosen on the search's polygon
+// slices before any exact section is cut. They lie within the mesh deflection of the exact
+// sections, and most of a cylinder's slices lie inside another: on screw.step every
+// cylinder's union is one of its sections, and 244 exact sections were cut for the 24 fused.
+std::vector<int> slicesAddingToUnion(const Cylinder& cylinder, const SliceSet& set, double meshDeflection) {
+  const Region2d near = nearCylinder(cylinder, meshDeflection);
+  std::vector<int> slices;
   std::vector<Region2d> polygons;
   for (int k = cylinder.firstSlice; k <= cylinder.lastSlice; ++k) {
-    const ExactSlice& s = slices.at(k);
+    std::vector<Region2d> own;
+    for (const Region2d& piece : set.slices[k].region.components())
+      if (piece.intersect(near).area() >= 0.5 * piece.area()) own.push_back(piece);
+    if (own.empty()) continue;
+    slices.push_back(k);
+    polygons.push_back(Region2d::uniteAll(own));
+  }
+  std::vector<int> out;
+  for (const size_t i : sectionsAddingToUnion(polygons, 2 * exactDeflection(meshDeflection)))
+    out.push_back(slices[i]);
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+// The exact cross-section of one cylinder on the plane at position 0 of its frame, from the
+// exact sections at `chosen` slices.
+TopoDS_Shape exactSection(const Cylinder& cylinder, const std::vector<int>& chosen,
+                          const std::map<int, ExactSlice>& slices, const SliceFrame& frame,
+                          double meshDeflection) {
+  const double deflection = exactDeflection(meshDeflection);
+  const Region2d near = nearCylinder(cylinder, meshDeflection);
+  std::vector<TopoDS_Shape> candidates;
+  std::vector<Region2d> polygons;
+  for (const int k : chosen) {
+    const auto slice = slices.find(k);
+    if (slice == slices.end()) throw Error(ErrorKind::Geometry, "an exact section was not cut");
+    const ExactSlice& s = slice->second;
     if (s.faces.IsNull()) continue;
     gp_Trsf onto;
     onto.SetTranslation(
@@ -202,39 +235,55 @@ std::vector<PatchFace> exactPatches(const Model& model, const Arrangement& a, co
   // Exact sections, each needed slice cut once.
   std::map<int, ExactSlice> uSlices, vSlices;
   std::map<std::pair<int, int>, TopoDS_Shape> sections;  // (family, cylinder) at position 0
+  std::vector<std::pair<int, int>> keys;                 // (family, cylinder) of every patch
+  for (const ScaffoldPatch& p : scaffold.patches) keys.push_back({p.family == Family::U ? 0 : 1, p.cylinder});
+  std::sort(keys.begin(), keys.end());
+  keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
+  std::vector<std::vector<int>> chosen(keys.size());
+  if (exact)
+    parallelFor(keys.size(), [&](size_t i) {
+      const bool isU = keys[i].first == 0;
+      chosen[i] = slicesAddingToUnion((isU ? a.uCylinders : a.vCylinders)[keys[i].second], isU ? a.u : a.v,
+                                      model.meshDeflection);
+    });
   if (exact) {
     for (const Family f : {Family::U, Family::V}) {
       const SliceSet& set = f == Family::U ? a.u : a.v;
-      const auto& cylinders = f == Family::U ? a.uCylinders : a.vCylinders;
       std::vector<int> needed;
-      for (const ScaffoldPatch& p : scaffold.patches) {
-        if (p.family != f) continue;
-        for (int k = cylinders[p.cylinder].firstSlice; k <= cylinders[p.cylinder].lastSlice; ++k)
-          needed.push_back(k);
-      }
+      for (size_t i = 0; i < keys.size(); ++i)
+        if ((keys[i].first == 0) == (f == Family::U))
+          needed.insert(needed.end(), chosen[i].begin(), chosen[i].end());
       std::sort(needed.begin(), needed.end());
       needed.erase(std::unique(needed.begin(), needed.end()), needed.end());
       std::vector<double> positions;
       for (int k : needed) positions.push_back(set.slices[k].position);
-      const std::vector<ExactSlice> cut = sliceBrep(
-          model.shape, set.frame, positions, exactDeflection(model.meshDeflection), SliceDetail::FacesOnly);
+      // Where OCCT fails, the patches are emitted as the polygons the search checked (below:
+      // a cylinder without its exact section, a patch whose slots cannot be cut).
+      std::vector<ExactSlice> cut;
+      try {
+        cut = sliceBrep(model.shape, set.frame, positions, exactDeflection(model.meshDeflection),
+                        SliceDetail::FacesOnly);
+      } catch (const Error&) {
+        continue;
+      }
       auto& into = f == Family::U ? uSlices : vSlices;
       for (size_t i = 0; i < needed.size(); ++i) into[needed[i]] = cut[i];
     }
-    std::vector<std::pair<int, int>> keys;
-    for (const ScaffoldPatch& p : scaffold.patches)
-      keys.push_back({p.family == Family::U ? 0 : 1, p.cylinder});
-    std::sort(keys.begin(), keys.end());
-    keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
-    std::vector<TopoDS_Shape> built(keys.size());
+    std::vector<std::optional<TopoDS_Shape>> built(keys.size());
     parallelFor(keys.size(), [&](size_t i) {
       const bool isU = keys[i].first == 0;
       const Cylinder& c = (isU ? a.uCylinders : a.vCylinders)[keys[i].second];
-      built[i] = occtGuard("building an exact patch", [&] {
-        return exactSection(c, isU ? uSlices : vSlices, isU ? a.u.frame : a.v.frame, model.meshDeflection);
-      });
+      try {
+        built[i] = occtGuard("building an exact patch", [&] {
+          return exactSection(c, chosen[i], isU ? uSlices : vSlices, isU ? a.u.frame : a.v.frame,
+                              model.meshDeflection);
+        });
+      } catch (const Error&) {
+        built[i].reset();  // a slice missing (its family's sections failed), or a fuse failed
+      }
     });
-    for (size_t i = 0; i < keys.size(); ++i) sections[keys[i]] = built[i];
+    for (size_t i = 0; i < keys.size(); ++i)
+      if (built[i]) sections[keys[i]] = *built[i];
   }
 
   const double crumb = std::max(0.5, r.params.width() * r.params.width());
@@ -246,22 +295,30 @@ std::vector<PatchFace> exactPatches(const Model& model, const Arrangement& a, co
       pf = polygonPatch(a, r, static_cast<int>(k));
       return;
     }
+    const auto section0 = sections.find({p.family == Family::U ? 0 : 1, p.cylinder});
+    if (section0 == sections.end()) {
+      pf = polygonPatch(a, r, static_cast<int>(k), false);
+      return;
+    }
     pf.exact = true;
-    occtGuard("cutting the slots of a patch", [&] {
-      gp_Trsf onto;
-      onto.SetTranslation(
-          gp_Vec(frame.normal.x * p.position, frame.normal.y * p.position, frame.normal.z * p.position));
-      const TopoDS_Shape section =
-          sections.at({p.family == Family::U ? 0 : 1, p.cylinder}).Moved(TopLoc_Location(onto));
-      const std::vector<TopoDS_Shape> tools = slotFaces(slotShapes(r.cuts[k], r.params), frame, p.position);
-      const TopoDS_Shape slotted = tools.empty() ? section : boolean(faces(section), tools, true);
-      std::vector<TopoDS_Shape> kept;
-      for (const TopoDS_Shape& f : faces(slotted))
-        if (area(f) >= crumb) kept.push_back(f);
-      pf.pieces = static_cast<int>(kept.size());
-      pf.shape = kept.size() == 1 ? kept.front() : compound(kept);
-      pf.outline = polygoniseFaces(pf.shape, frame, kOutlineDeflection);
-    });
+    try {
+      occtGuard("cutting the slots of a patch", [&] {
+        gp_Trsf onto;
+        onto.SetTranslation(
+            gp_Vec(frame.normal.x * p.position, frame.normal.y * p.position, frame.normal.z * p.position));
+        const TopoDS_Shape section = section0->second.Moved(TopLoc_Location(onto));
+        const std::vector<TopoDS_Shape> tools = slotFaces(slotShapes(r.cuts[k], r.params), frame, p.position);
+        const TopoDS_Shape slotted = tools.empty() ? section : boolean(faces(section), tools, true);
+        std::vector<TopoDS_Shape> kept;
+        for (const TopoDS_Shape& f : faces(slotted))
+          if (area(f) >= crumb) kept.push_back(f);
+        pf.pieces = static_cast<int>(kept.size());
+        pf.shape = kept.size() == 1 ? kept.front() : compound(kept);
+        pf.outline = polygoniseFaces(pf.shape, frame, kOutlineDeflection);
+      });
+    } catch (const Error&) {
+      pf = polygonPatch(a, r, static_cast<int>(k), false);
+    }
   });
   return out;
 }

@@ -20,11 +20,16 @@
 #include <gp_Ax3.hxx>
 #include <gp_Pln.hxx>
 
+#include <Standard_Failure.hxx>
+
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <optional>
 #include <sstream>
 #include <thread>
 
+#include "slicing/section_faces.hpp"
 #include "support/error.hpp"
 #include "support/occt_guard.hpp"
 #include "support/parallel.hpp"
@@ -60,9 +65,9 @@ Region2d::Loop polygoniseWire(const TopoDS_Wire& wire, const TopoDS_Face& face, 
 // Several planes are cut in one Boolean: its set-up (the solid's own edges and faces, their
 // boxes) is then paid once per batch instead of once per plane, 1.5x faster on
 // step/screw.step. The planes are parallel, so the cutters never meet each other.
-std::vector<ExactSlice> sliceBatch(const std::vector<TopoDS_Shape>& solids, const SliceFrame& frame,
-                                   const std::vector<double>& positions, const gp_Pnt& centre,
-                                   double halfSize, double deflection, SliceDetail detail) {
+std::vector<TopoDS_Shape> commonFaces(const std::vector<TopoDS_Shape>& solids, const SliceFrame& frame,
+                                      const std::vector<double>& positions, const gp_Pnt& centre,
+                                      double halfSize) {
   TopoDS_Compound cutters;
   BRep_Builder builder;
   builder.MakeCompound(cutters);
@@ -111,10 +116,64 @@ std::vector<ExactSlice> sliceBatch(const std::vector<TopoDS_Shape>& solids, cons
       any[nearest] = true;
     }
   }
-  std::vector<ExactSlice> out(positions.size());
-  for (size_t k = 0; k < positions.size(); ++k) {
+  std::vector<TopoDS_Shape> out(positions.size());
+  for (size_t k = 0; k < positions.size(); ++k)
+    if (any[k]) out[k] = faces[k];
+  return out;
+}
+
+// A solid to cut and where it lies along the frame's normal.
+struct Piece {
+  TopoDS_Shape solid;
+  double lo = 0, hi = 0;
+};
+
+// One batch of planes, solid by solid, each solid only at the planes that reach it (a
+// bearing's balls meet a few planes each): by section curves where that route is sure of
+// its faces, by the Common elsewhere.
+std::vector<ExactSlice> sliceBatch(const std::vector<Piece>& pieces, const SliceFrame& frame,
+                                   const std::vector<double>& positions, const gp_Pnt& centre,
+                                   double halfSize, double deflection, SliceDetail detail,
+                                   SectionRoute route) {
+  const size_t n = positions.size();
+  BRep_Builder builder;
+  std::vector<TopoDS_Compound> faces(n);
+  for (TopoDS_Compound& f : faces) builder.MakeCompound(f);
+  std::vector<bool> any(n, false), byCurves(n, route == SectionRoute::Curves);
+  for (const Piece& piece : pieces) {
+    std::vector<size_t> meeting;
+    std::vector<double> at;
+    for (size_t k = 0; k < n; ++k)
+      if (positions[k] >= piece.lo && positions[k] <= piece.hi)
+        meeting.push_back(k), at.push_back(positions[k]);
+    if (meeting.empty()) continue;
+    std::vector<std::optional<TopoDS_Shape>> made(at.size());
+    if (route == SectionRoute::Curves) {
+      try {
+        made = sectionFaces({piece.solid}, frame, at, centre, halfSize, deflection);
+      } catch (const Standard_Failure&) {
+        // The Common below makes every plane of the batch.
+      }
+    }
+    std::vector<double> rest;
+    for (size_t i = 0; i < at.size(); ++i)
+      if (!made[i]) rest.push_back(at[i]), byCurves[meeting[i]] = false;
+    if (!rest.empty()) {
+      const std::vector<TopoDS_Shape> cut = commonFaces({piece.solid}, frame, rest, centre, halfSize);
+      for (size_t i = 0, j = 0; i < at.size(); ++i)
+        if (!made[i]) made[i] = cut[j++];
+    }
+    for (size_t i = 0; i < at.size(); ++i)
+      for (TopExp_Explorer f(*made[i], TopAbs_FACE); f.More(); f.Next()) {
+        builder.Add(faces[meeting[i]], f.Current());
+        any[meeting[i]] = true;
+      }
+  }
+  std::vector<ExactSlice> out(n);
+  for (size_t k = 0; k < n; ++k) {
     ExactSlice& slice = out[k];
     slice.position = positions[k];
+    slice.route = byCurves[k] ? SectionRoute::Curves : SectionRoute::Common;
     if (!any[k]) continue;
     slice.faces = faces[k];
     if (detail == SliceDetail::FacesOnly) continue;
@@ -144,8 +203,8 @@ Region2d polygoniseFaces(const TopoDS_Shape& faces, const SliceFrame& frame, dou
 }
 
 std::vector<ExactSlice> sliceBrep(const TopoDS_Shape& solid, const SliceFrame& frame,
-                                  const std::vector<double>& positions, double deflection,
-                                  SliceDetail detail) {
+                                  const std::vector<double>& positions, double deflection, SliceDetail detail,
+                                  SectionRoute route) {
   if (!(deflection > 0)) throw Error(ErrorKind::BadParameter, "the polygon deflection must be positive");
   Bnd_Box box;
   occtGuard("measuring the shape", [&] { BRepBndLib::Add(solid, box); });
@@ -157,10 +216,23 @@ std::vector<ExactSlice> sliceBrep(const TopoDS_Shape& solid, const SliceFrame& f
   // (occ/Motor-c.brep: 542 of 4233 mm²). A solid without faces is skipped: Booleans take it
   // for an infinite solid (occ/Axis_of_bearing.brep holds one). Overlapping solids give
   // overlapping faces.
-  std::vector<TopoDS_Shape> solids;
+  std::vector<Piece> solids;
   for (TopExp_Explorer it(solid, TopAbs_SOLID); it.More(); it.Next())
-    if (TopExp_Explorer(it.Current(), TopAbs_FACE).More()) solids.push_back(it.Current());
-  if (solids.empty() && !TopExp_Explorer(solid, TopAbs_SOLID).More()) solids.push_back(solid);
+    if (TopExp_Explorer(it.Current(), TopAbs_FACE).More()) solids.push_back({it.Current()});
+  if (solids.empty() && !TopExp_Explorer(solid, TopAbs_SOLID).More()) solids.push_back({solid});
+  occtGuard("measuring the solids", [&] {
+    for (Piece& piece : solids) {
+      Bnd_Box own;
+      BRepBndLib::Add(piece.solid, own);  // enlarged by the shape's tolerances: never too small
+      piece.lo = std::numeric_limits<double>::max(), piece.hi = std::numeric_limits<double>::lowest();
+      for (const double x : {own.CornerMin().X(), own.CornerMax().X()})
+        for (const double y : {own.CornerMin().Y(), own.CornerMax().Y()})
+          for (const double z : {own.CornerMin().Z(), own.CornerMax().Z()}) {
+            const double p = frame.position({x, y, z});
+            piece.lo = std::min(piece.lo, p), piece.hi = std::max(piece.hi, p);
+          }
+    }
+  });
   // Batches of up to 16 planes (larger ones gained nothing on screw.step), at least four
   // per core so the cores finish together.
   const size_t cores = std::max(1u, std::thread::hardware_concurrency());
@@ -172,7 +244,7 @@ std::vector<ExactSlice> sliceBrep(const TopoDS_Shape& solid, const SliceFrame& f
     const size_t first = b * batch, last = std::min(positions.size(), first + batch);
     const std::vector<double> some(positions.begin() + first, positions.begin() + last);
     const std::vector<ExactSlice> cut = occtGuard("cutting sections", [&] {
-      return sliceBatch(solids, frame, some, centre, halfSize, deflection, detail);
+      return sliceBatch(solids, frame, some, centre, halfSize, deflection, detail, route);
     });
     std::copy(cut.begin(), cut.end(), slices.begin() + first);
   });

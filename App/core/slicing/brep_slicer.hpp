@@ -12,12 +12,20 @@
 
 namespace sliceform {
 
+// How the section faces are made. Curves: BRepAlgoAPI_Section's curves chained into loops
+// and faces made from them on the plane (slicing/section_faces.hpp), each plane that route
+// is unsure of cut by the Common instead. Common: BRepAlgoAPI_Common of the solid with a
+// face on each plane, the faces as the Boolean splits them (several times slower: it
+// builds the split faces of the solid too).
+enum class SectionRoute { Curves, Common };
+
 struct ExactSlice {
   double position = 0;
   TopoDS_Shape faces;  // compound of planar faces in 3D, null where the plane misses
   double area = 0;     // of the faces, mm², from OCCT's surface integration (where solids
                        // overlap, their faces overlap and count twice)
   Region2d region;     // the faces' boundaries polygonised within `deflection`
+  SectionRoute route = SectionRoute::Common;  // how the faces were made
 };
 
 // The polygon deflection used for a model triangulated within `meshDeflection`: ten times
@@ -34,7 +42,8 @@ enum class SliceDetail { Measured, FacesOnly };
 // `deflection` is the largest distance, in mm, between an edge and its polygon.
 std::vector<ExactSlice> sliceBrep(const TopoDS_Shape& solid, const SliceFrame& frame,
                                   const std::vector<double>& positions, double deflection,
-                                  SliceDetail detail = SliceDetail::Measured);
+                                  SliceDetail detail = SliceDetail::Measured,
+                                  SectionRoute route = SectionRoute::Curves);
 
 // The outer and hole loops of planar faces, polygonised, in the frame's 2D coordinates.
 Region2d polygoniseFaces(const TopoDS_Shape& faces, const SliceFrame& frame, double deflection);
