@@ -29,7 +29,8 @@ def svg_segments(path, height):
     out = []
     for element in ET.parse(path).getroot().iter("{http://www.w3.org/2000/svg}path"):
         colour = element.get("style", "") + " " + (element.get("stroke") or "")
-        kind = "cut" if re.search(r"100%,0%,0%|#ff0000|rgb\(255,\s*0,\s*0\)", colour) else "engrave"
+        # cairo 1.16 writes style="...stroke:rgb(100%,0%,0%)", 1.18 stroke="rgb(100%, 0%, 0%)".
+        kind = "cut" if re.search(r"100%,\s*0%,\s*0%|#ff0000|rgb\(255,\s*0,\s*0\)", colour) else "engrave"
         a, b, c, d, e, f = 1, 0, 0, 1, 0, 0
         if element.get("transform"):
             a, b, c, d, e, f = [float(v) for v in re.findall(r"-?[0-9.]+", element.get("transform"))]
