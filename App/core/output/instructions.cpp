@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <memory>
 
+#include "output/cairo_file.hpp"
 #include "support/atomic_file.hpp"
 #include "support/error.hpp"
 
@@ -160,37 +161,32 @@ void writeInstructionsPdf(const Design& d, const std::vector<Panel3>& panels, co
         cairo_pdf_surface_create(temporary.c_str(), kPageW * kPointsPerMm, kPageH * kPointsPerMm);
     cairo_pdf_surface_set_metadata(surface, CAIRO_PDF_METADATA_CREATOR, "Sliceform");
     cairo_pdf_surface_set_metadata(surface, CAIRO_PDF_METADATA_TITLE, ("Assembling " + title).c_str());
-    cairo_t* cr = cairo_create(surface);
-    cairo_scale(cr, kPointsPerMm, kPointsPerMm);  // millimetres, y down
-    cover(cr, d, panels, title);
-    cairo_show_page(cr);
-    const double cellW = (kPageW - 2 * kMargin) / kColumns;
-    const double cellH = (kPageH - 2 * kMargin) / (kStepsPerPage / kColumns);
-    GrowingAssembly pictures(panels, kPictureWidth);
-    for (size_t i = 0; i < steps.size(); ++i) {
-      const AssemblyStep& step = steps[i];
-      const int slot = static_cast<int>(i % kStepsPerPage);
-      const double x = kMargin + (slot % kColumns) * cellW, y = kMargin + (slot / kColumns) * cellH;
-      double line =
-          text(cr, "Step " + std::to_string(i + 1) + ": " + step.id, x, y + 5, 4.5, cellW - 4, true);
-      std::string how;
-      if (i == 0) how = "Hold it upright; the next patches slide onto it.";
-      if (!step.fromTop.empty()) how += "Slots opening at the top onto " + joined(step.fromTop) + ". ";
-      if (!step.fromBottom.empty())
-        how += "Slots opening at the bottom onto " + joined(step.fromBottom) + ". ";
-      if (!step.through.empty()) how += "Slots through, onto " + joined(step.through) + ". ";
-      if (!step.partnerCuts.empty()) how += "Uncut where " + joined(step.partnerCuts) + " is cut through. ";
-      line = text(cr, how, x, line, 3, cellW - 4);
-      const int p = step.patch >= 0 ? panelOf[step.patch] : -1;
-      if (p >= 0) drawPicture(cr, pictures.add(p), x, line, cellW - 4, y + cellH - line - 3);
-      if (slot == kStepsPerPage - 1 || i + 1 == steps.size()) cairo_show_page(cr);
-    }
-    cairo_destroy(cr);
-    cairo_surface_finish(surface);
-    const cairo_status_t status = cairo_surface_status(surface);
-    cairo_surface_destroy(surface);
-    if (status != CAIRO_STATUS_SUCCESS)
-      throw Error(ErrorKind::Io, "cannot write " + path + ": " + cairo_status_to_string(status));
+    drawAndFinish(surface, path, [&](cairo_t* cr) {
+      cairo_scale(cr, kPointsPerMm, kPointsPerMm);  // millimetres, y down
+      cover(cr, d, panels, title);
+      cairo_show_page(cr);
+      const double cellW = (kPageW - 2 * kMargin) / kColumns;
+      const double cellH = (kPageH - 2 * kMargin) / (kStepsPerPage / kColumns);
+      GrowingAssembly pictures(panels, kPictureWidth);
+      for (size_t i = 0; i < steps.size(); ++i) {
+        const AssemblyStep& step = steps[i];
+        const int slot = static_cast<int>(i % kStepsPerPage);
+        const double x = kMargin + (slot % kColumns) * cellW, y = kMargin + (slot / kColumns) * cellH;
+        double line =
+            text(cr, "Step " + std::to_string(i + 1) + ": " + step.id, x, y + 5, 4.5, cellW - 4, true);
+        std::string how;
+        if (i == 0) how = "Hold it upright; the next patches slide onto it.";
+        if (!step.fromTop.empty()) how += "Slots opening at the top onto " + joined(step.fromTop) + ". ";
+        if (!step.fromBottom.empty())
+          how += "Slots opening at the bottom onto " + joined(step.fromBottom) + ". ";
+        if (!step.through.empty()) how += "Slots through, onto " + joined(step.through) + ". ";
+        if (!step.partnerCuts.empty()) how += "Uncut where " + joined(step.partnerCuts) + " is cut through. ";
+        line = text(cr, how, x, line, 3, cellW - 4);
+        const int p = step.patch >= 0 ? panelOf[step.patch] : -1;
+        if (p >= 0) drawPicture(cr, pictures.add(p), x, line, cellW - 4, y + cellH - line - 3);
+        if (slot == kStepsPerPage - 1 || i + 1 == steps.size()) cairo_show_page(cr);
+      }
+    });
   });
 }
 

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 #include "output/sheets_cairo.hpp"
 
+#include "output/cairo_file.hpp"
+
 #include <cairo-pdf.h>
 #include <cairo-svg.h>
 #include <cairo.h>
@@ -89,34 +91,15 @@ void drawScaleMark(cairo_t* cr, const SheetSpec& spec, int page, int pages) {
   cairo_restore(cr);
 }
 
-void check(cairo_surface_t* surface, const std::string& path) {
-  const cairo_status_t status = cairo_surface_status(surface);
-  if (status != CAIRO_STATUS_SUCCESS)
-    throw Error(ErrorKind::Io, "cannot write " + path + ": " + cairo_status_to_string(status));
-}
-
-// Runs `draw` on a surface and finishes it, whatever happens, before the file is renamed.
-template <class Draw>
-void finish(cairo_surface_t* surface, const std::string& path, Draw draw) {
-  cairo_t* cr = cairo_create(surface);
-  draw(cr);
-  cairo_destroy(cr);
-  cairo_surface_finish(surface);
-  const cairo_status_t status = cairo_surface_status(surface);
-  cairo_surface_destroy(surface);
-  if (status != CAIRO_STATUS_SUCCESS)
-    throw Error(ErrorKind::Io, "cannot write " + path + ": " + cairo_status_to_string(status));
-}
-
 }  // namespace
 
 void writeSheetsPdf(const std::vector<SheetDrawing>& sheets, const SheetSpec& spec, const std::string& path) {
   writeAtomically(path, [&](const std::string& temporary) {
     cairo_surface_t* surface =
         cairo_pdf_surface_create(temporary.c_str(), spec.width * kPointsPerMm, spec.height * kPointsPerMm);
-    check(surface, path);
+    checkSurface(surface, path);
     cairo_pdf_surface_set_metadata(surface, CAIRO_PDF_METADATA_CREATOR, "Sliceform");
-    finish(surface, path, [&](cairo_t* cr) {
+    drawAndFinish(surface, path, [&](cairo_t* cr) {
       for (size_t i = 0; i < sheets.size(); ++i) {
         drawSheet(cr, sheets[i], spec, kPointsPerMm);
         drawScaleMark(cr, spec, static_cast<int>(i) + 1, static_cast<int>(sheets.size()));
@@ -131,9 +114,9 @@ void writeSheetSvg(const SheetDrawing& sheet, const SheetSpec& spec, const std::
     // With the document unit set to mm, cairo writes width="…mm" and a viewBox in the
     // surface's own units, which we make millimetres: one user unit is one mm.
     cairo_surface_t* surface = cairo_svg_surface_create(temporary.c_str(), spec.width, spec.height);
-    check(surface, path);
+    checkSurface(surface, path);
     cairo_svg_surface_set_document_unit(surface, CAIRO_SVG_UNIT_MM);
-    finish(surface, path, [&](cairo_t* cr) { drawSheet(cr, sheet, spec, 1); });
+    drawAndFinish(surface, path, [&](cairo_t* cr) { drawSheet(cr, sheet, spec, 1); });
   });
 }
 
@@ -148,7 +131,7 @@ void writeSheetsPng(const std::vector<SheetDrawing>& sheets, const SheetSpec& sp
       static_cast<int>(std::ceil((std::max(rows, 1) * (spec.height + gap) + gap) * pixelsPerMm));
   writeAtomically(path, [&](const std::string& temporary) {
     cairo_surface_t* surface = cairo_image_surface_create(CAIRO_FORMAT_RGB24, width, height);
-    check(surface, path);
+    checkSurface(surface, path);
     cairo_t* cr = cairo_create(surface);
     cairo_set_source_rgb(cr, 0.85, 0.85, 0.85);
     cairo_paint(cr);

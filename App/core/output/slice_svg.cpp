@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <string>
 
+#include "output/cairo_file.hpp"
 #include "support/atomic_file.hpp"
 #include "support/error.hpp"
 
@@ -91,28 +92,23 @@ void writeSliceSetSvg(const SliceSet& set, const std::string& title, const std::
     cairo_surface_t* surface = cairo_svg_surface_create(temporary.c_str(), width, height);
     // Document unit mm: width="…mm" and a viewBox in mm, so 1 user unit is 1 mm.
     cairo_svg_surface_set_document_unit(surface, CAIRO_SVG_UNIT_MM);
-    cairo_t* cr = cairo_create(surface);
-    cairo_select_font_face(cr, "sans-serif", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
-    cairo_set_font_size(cr, kFont * 1.4);
-    cairo_set_source_rgb(cr, 0, 0, 0);
-    cairo_move_to(cr, kGap, kGap * 0.8);
-    cairo_show_text(cr, title.c_str());
-    cairo_set_font_size(cr, kFont);
-    for (int i = 0; i < n; ++i) {
-      const double ox = kGap + (i % columns) * (cellW + kGap);
-      const double oy = 2 * kGap + (i / columns) * (cellH + kGap);
-      const Slice& slice = set.slices[i];
-      if (!box.empty) drawRegion(cr, slice.region, ox + (cellW - shapeW) / 2, oy, box);
-      cairo_set_source_rgb(cr, 0, 0, 0.7);
-      cairo_move_to(cr, ox, oy + cellH - kLabel + kFont + 0.5);
-      cairo_show_text(cr, labelOf(slice, i).c_str());
-    }
-    cairo_destroy(cr);
-    cairo_surface_finish(surface);
-    const cairo_status_t status = cairo_surface_status(surface);
-    cairo_surface_destroy(surface);
-    if (status != CAIRO_STATUS_SUCCESS)
-      throw Error(ErrorKind::Io, "cannot write " + path + ": " + cairo_status_to_string(status));
+    drawAndFinish(surface, path, [&](cairo_t* cr) {
+      cairo_select_font_face(cr, "sans-serif", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
+      cairo_set_font_size(cr, kFont * 1.4);
+      cairo_set_source_rgb(cr, 0, 0, 0);
+      cairo_move_to(cr, kGap, kGap * 0.8);
+      cairo_show_text(cr, title.c_str());
+      cairo_set_font_size(cr, kFont);
+      for (int i = 0; i < n; ++i) {
+        const double ox = kGap + (i % columns) * (cellW + kGap);
+        const double oy = 2 * kGap + (i / columns) * (cellH + kGap);
+        const Slice& slice = set.slices[i];
+        if (!box.empty) drawRegion(cr, slice.region, ox + (cellW - shapeW) / 2, oy, box);
+        cairo_set_source_rgb(cr, 0, 0, 0.7);
+        cairo_move_to(cr, ox, oy + cellH - kLabel + kFont + 0.5);
+        cairo_show_text(cr, labelOf(slice, i).c_str());
+      }
+    });
   });
 }
 
