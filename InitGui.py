@@ -21,6 +21,8 @@ class SliceformWorkbench(FreeCADGui.Workbench):
         names = commands.register()
         self.appendToolbar("Sliceform", names)
         self.appendMenu("&Sliceform", names)
+        # The preferences page's icon is looked up by name: preferences-sliceform.svg.
+        FreeCADGui.addIconPath(sliceform_gui.icon_path(""))
         FreeCADGui.addPreferencePage(sliceform_gui.ui_path("preferences.ui"), "Sliceform")
 
     def GetClassName(self):

@@ -1,87 +1,290 @@
 # SPDX-License-Identifier: LGPL-2.1-or-later
-"""The Sliceform feature's children, regenerated in place on every recompute: one sketch per
-patch (in a group) and one TechDraw page per sheet. Objects are reused by position, so
-their names stay stable while the patch and sheet counts do; extra ones are removed."""
+"""The Sliceform feature's children. They depend on the feature, never the reverse, the
+way TechDraw views depend on their source:
+
+- a *patch* (Part::Part2DObjectPython) per patch: its exact outline as a face on its
+  plane, with the properties `Sliceform` (link) and `Index`;
+- a *sheet patch* (Part::FeaturePython) per patch, linking the patch: the patch as it lies
+  on its sheet (cut curves and engraved labels, sheet millimetres);
+- a TechDraw page per sheet (dynamic properties `Sliceform` and `SheetIndex`) with a
+  template of the sheet's size and one view per sheet patch.
+
+Each child builds its geometry in its own execute() from the design the Sliceform's proxy
+holds in memory (designed again on demand, after a reopen). The feature itself never adds,
+removes or recomputes other objects: sync() does, only when the patches or their sheets
+differ from what the children show, as a step of its own inside the transaction of the
+edit that caused it (a command, the task panel, or the document's recompute)."""
 import os
 
 import FreeCAD
+import Part
 
 from sliceform_app import geometry
 
 V = FreeCAD.Vector
 
 
-def _reuse(doc, existing, count, make):
-    """`count` objects: the existing ones first, new ones from make(i) after; the rest are
-    removed from the document."""
-    kept = [o for o in existing if o is not None and o.Document == doc][:count]
-    for extra in [o for o in existing if o is not None and o not in kept]:
-        if extra.Document == doc:
-            _remove(doc, extra)
-    while len(kept) < count:
-        kept.append(make(len(kept)))
-    return kept
+QT_TRANSLATE_NOOP = FreeCAD.Qt.QT_TRANSLATE_NOOP
 
 
-def _remove(doc, obj):
-    """Removes a child and what only it uses: a page's views and template, a view's source.
-    A page is emptied first and removed last: FreeCAD 1.0 removes a page's views itself when
-    the page goes, and crashed (in DrawPage::unsetupObject) on views already removed in the
-    same recompute."""
-    if obj.TypeId == "TechDraw::DrawPage":
-        for view in list(obj.Views or []):
-            obj.removeView(view)
-            if view.Document == doc:
-                _remove(doc, view)
-        template = obj.Template
+# ---------------------------------------------------------------------------------------------
+# Which objects are whose
+
+
+def is_sliceform(obj):
+    from sliceform_app import feature
+
+    return obj is not None and isinstance(getattr(obj, "Proxy", None), feature.Sliceform)
+
+
+def _proxy_type(obj):
+    return getattr(getattr(obj, "Proxy", None), "Type", None)
+
+
+def patches_of(sliceform):
+    """The patch children of a sliceform, by index."""
+    found = [o for o in sliceform.InList if _proxy_type(o) == "SliceformPatch" and o.Sliceform == sliceform]
+    return sorted(found, key=lambda o: o.Index)
+
+
+def sheet_patch_of(patch):
+    for o in patch.InList:
+        if _proxy_type(o) == "SliceformSheetPatch" and o.Patch == patch:
+            return o
+    return None
+
+
+def pages_of(sliceform):
+    """The TechDraw pages of a sliceform, by sheet."""
+    found = [
+        o
+        for o in sliceform.InList
+        if o.TypeId == "TechDraw::DrawPage" and getattr(o, "Sliceform", None) == sliceform
+    ]
+    return sorted(found, key=lambda o: o.SheetIndex)
+
+
+def owned_objects(sliceform):
+    """Everything the sliceform made, in an order that can be removed one by one: views,
+    templates and pages first, then sheet patches, then patches."""
+    out = []
+    for page in pages_of(sliceform):
+        out.extend(v for v in page.Views)
+        template = page.Template
         if template is not None and not isinstance(template, str):
-            obj.Template = None
-            if template.Document == doc:
-                doc.removeObject(template.Name)
-        doc.removeObject(obj.Name)
-        return
-    owned = list(obj.Source) if obj.TypeId == "TechDraw::DrawViewPart" else []
-    doc.removeObject(obj.Name)  # first, so no view recomputes without its source
-    for child in owned:
-        if child.Document == doc:
-            _remove(doc, child)
+            out.append(template)
+        out.append(page)
+    patches = patches_of(sliceform)
+    for patch in patches:
+        sheet_patch = sheet_patch_of(patch)
+        if sheet_patch is not None:
+            out.extend(o for o in sheet_patch.InList if o.TypeId == "TechDraw::DrawViewPart" and o not in out)
+            out.append(sheet_patch)
+    out.extend(patches)
+    return out
 
 
-def _group(feature, prop, suffix, what):
-    """The feature's group held in property `prop`, made if missing."""
-    doc = feature.Document
-    group = getattr(feature, prop)
-    if group is None or group.Document != doc:
-        group = doc.addObject("App::DocumentObjectGroup", feature.Name + suffix)
-        setattr(feature, prop, group)
-    group.Label = "{} {}".format(feature.Label, what)
-    group.purgeTouched()
-    return group
+# ---------------------------------------------------------------------------------------------
+# The children's features
 
 
-def update_sketches(feature, patches):
-    """One Sketcher::SketchObject per patch on its plane: the exact outline and slots."""
-    doc = feature.Document
-    group = _group(feature, "PatchGroup", "_Patches", "patches")
+class _Child:
+    """What the children's proxies share: a Type, nothing saved but it."""
 
-    def make(i):
-        sketch = doc.addObject("Sketcher::SketchObject", "{}_Patch{:03d}".format(feature.Name, i))
-        group.addObject(sketch)
-        return sketch
+    Type = None
 
-    sketches = _reuse(doc, list(feature.PatchSketches), len(patches), make)
-    for sketch, patch in zip(sketches, patches):
-        sketch.deleteAllGeometry()
-        curves = [c for loop in patch["loops"] for c in geometry.loop_curves(loop, patch["exact"])]
-        sketch.addGeometry(curves, False)
-        sketch.Placement = geometry.plane_placement(patch)
-        sketch.Label = "{} {}".format(feature.Label, patch["id"])
-        sketch.Visibility = False
-        # Solved and built now, so the next document recompute has nothing left to do.
-        sketch.recompute()
-        sketch.purgeTouched()
-    feature.PatchSketches = sketches
-    return sketches
+    def __getstate__(self):
+        return {"Type": self.Type}
+
+    def __setstate__(self, state):
+        self.built = None
+
+    def dumps(self):
+        return self.__getstate__()
+
+    def loads(self, state):
+        return None
+
+
+class Patch(_Child):
+    """One patch of a sliceform: its exact outline (slots included) as a face on its plane."""
+
+    Type = "SliceformPatch"
+
+    def __init__(self, obj):
+        obj.Proxy = self
+        self.initProperties(obj)
+
+    def initProperties(self, obj):
+        have = obj.PropertiesList
+        if "Sliceform" not in have:
+            obj.addProperty("App::PropertyLink", "Sliceform", "Patch",
+                            QT_TRANSLATE_NOOP("App::Property", "The sliceform this patch belongs to"))
+        if "Index" not in have:
+            obj.addProperty("App::PropertyInteger", "Index", "Patch",
+                            QT_TRANSLATE_NOOP("App::Property", "Position of the patch in the design"))
+        if "PatchId" not in have:
+            obj.addProperty("App::PropertyString", "PatchId", "Patch",
+                            QT_TRANSLATE_NOOP("App::Property", "The id engraved on the patch"))
+        for name in ("Sliceform", "Index", "PatchId"):
+            obj.setEditorMode(name, 1)
+
+    def onDocumentRestored(self, obj):
+        self.initProperties(obj)
+
+    def execute(self, obj):
+        if not is_sliceform(obj.Sliceform):
+            raise ValueError(QT_TRANSLATE_NOOP("Sliceform", "this patch's sliceform was deleted: delete the patch too"))
+        proxy = obj.Sliceform.Proxy
+        patches = proxy.flat_patches(obj.Sliceform)
+        if obj.Index >= len(patches):
+            return  # left over from a larger design until the sync that follows removes it
+        # The feature recomputes for FoldAngle too: the same design needs no new shape.
+        built = (proxy.key, obj.Index)
+        if getattr(self, "built", None) == built and not obj.Shape.isNull():
+            return
+        obj.Shape = patch_shape(patches[obj.Index])
+        self.built = built
+
+
+class SheetPatch(_Child):
+    """A patch as it lies on its sheet, for the TechDraw view that shows it: the cut curves
+    and the engraved strokes in sheet millimetres, with two vertices at the sheet's corners
+    so that the shape's box is the sheet (TechDraw centres a view on its shape's box: the
+    view then sits at the sheet's centre and the page shows the sheet at 1:1)."""
+
+    Type = "SliceformSheetPatch"
+
+    def __init__(self, obj):
+        obj.Proxy = self
+        self.initProperties(obj)
+
+    def initProperties(self, obj):
+        if "Patch" not in obj.PropertiesList:
+            obj.addProperty("App::PropertyLink", "Patch", "Patch",
+                            QT_TRANSLATE_NOOP("App::Property", "The patch shown on its sheet"))
+        obj.setEditorMode("Patch", 1)
+
+    def onDocumentRestored(self, obj):
+        self.initProperties(obj)
+
+    def execute(self, obj):
+        patch = obj.Patch
+        sliceform = getattr(patch, "Sliceform", None)
+        if not is_sliceform(sliceform):
+            raise ValueError(QT_TRANSLATE_NOOP("Sliceform", "this drawing's patch or sliceform was deleted"))
+        patches = sliceform.Proxy.flat_patches(sliceform)
+        drawing = sliceform.Proxy.sheet_drawings(sliceform).get(patches[patch.Index]["id"]) if patch.Index < len(patches) else None
+        if drawing is None:
+            return  # left over from a larger design until the sync that follows removes it
+        built = (sliceform.Proxy.key, patch.Index)
+        if getattr(self, "built", None) == built and not obj.Shape.isNull():
+            return
+        sheets = sliceform.Proxy.sheets(sliceform)
+        corners = [Part.Vertex(0, 0, 0), Part.Vertex(sheets["width"], sheets["height"], 0)]
+        obj.Shape = Part.makeCompound(geometry.patch_drawing(drawing).childShapes() + corners)
+        self.built = built
+
+
+def patch_shape(patch):
+    """The patch's face (outline with its slots and holes) placed on its plane."""
+    wires = []
+    for loop in patch["loops"]:
+        edges = [c.toShape() for c in geometry.loop_curves(loop, patch["exact"])]
+        wires.append(Part.Wire(Part.__sortEdges__(edges)) if len(edges) > 1 else Part.Wire(edges))
+    try:
+        shape = Part.makeFace(wires, "Part::FaceMakerBullseye")
+    except Part.OCCError:
+        shape = Part.makeCompound(wires)  # still shows the outline
+    shape.Placement = geometry.plane_placement(patch)
+    return shape
+
+
+# ---------------------------------------------------------------------------------------------
+# Making and removing children
+
+
+def _new_patch(doc, sliceform, index):
+    obj = doc.addObject("Part::Part2DObjectPython", "{}_Patch{:03d}".format(sliceform.Name, index + 1))
+    Patch(obj)
+    obj.Sliceform = sliceform
+    obj.Index = index
+    if FreeCAD.GuiUp:
+        from sliceform_gui import view_provider
+
+        view_provider.ViewProviderPatch(obj.ViewObject)
+        obj.ViewObject.Visibility = False
+    return obj
+
+
+def _new_sheet_patch(doc, patch):
+    obj = doc.addObject("Part::FeaturePython", patch.Name + "_Sheet")
+    SheetPatch(obj)
+    obj.Patch = patch
+    if FreeCAD.GuiUp:
+        from sliceform_gui import view_provider
+
+        view_provider.ViewProviderSheetPatch(obj.ViewObject)
+        obj.ViewObject.Visibility = False
+    return obj
+
+
+def _new_page(doc, sliceform, index):
+    page = doc.addObject("TechDraw::DrawPage", "{}_Sheet{:02d}".format(sliceform.Name, index + 1))
+    page.addProperty("App::PropertyLink", "Sliceform", "Sliceform",
+                     QT_TRANSLATE_NOOP("App::Property", "The sliceform whose sheet this page shows"))
+    page.addProperty("App::PropertyInteger", "SheetIndex", "Sliceform",
+                     QT_TRANSLATE_NOOP("App::Property", "Which sheet of the layout"))
+    page.addProperty("App::PropertyString", "Sheet", "Sliceform",
+                     QT_TRANSLATE_NOOP("App::Property", "The sheet's size and margin"))
+    for name in ("Sliceform", "SheetIndex", "Sheet"):
+        page.setEditorMode(name, 1)
+    page.Sliceform = sliceform
+    page.SheetIndex = index
+    page.Template = doc.addObject("TechDraw::DrawSVGTemplate", "{}_Template{:02d}".format(sliceform.Name, index + 1))
+    if FreeCAD.GuiUp:
+        if hasattr(page.ViewObject, "ShowFrames"):
+            page.ViewObject.ShowFrames = False  # a sheet to cut, not a drawing: no frames or labels
+        # Closed until the user opens it: TechDraw opens a visible page again on reopening.
+        page.ViewObject.Visibility = False
+    return page
+
+
+def _new_view(doc, page, sheet_patch, sheets):
+    view = doc.addObject("TechDraw::DrawViewPart", sheet_patch.Patch.Name + "_View")
+    page.addView(view)
+    view.Source = [sheet_patch]
+    view.Direction, view.XDirection = V(0, 0, 1), V(1, 0, 0)
+    view.ScaleType, view.Scale = "Custom", 1.0
+    return view
+
+
+def remove_objects(doc, objects):
+    names = [o.Name for o in objects]
+    for name in names:
+        obj = doc.getObject(name)
+        if obj is None:
+            continue
+        if obj.TypeId == "TechDraw::DrawViewPart":
+            for page in [o for o in obj.InList if o.TypeId == "TechDraw::DrawPage"]:
+                page.removeView(obj)
+        elif obj.TypeId == "TechDraw::DrawPage":
+            # Emptied first, its template too: FreeCAD 1.0 removes a page's views itself when
+            # the page goes (DrawPage::unsetupObject) and crashed on views already removed.
+            page_views = list(obj.Views)
+            obj.Views = []
+            template = obj.Template
+            if template is not None and not isinstance(template, str):
+                obj.Template = None
+                if template not in objects:
+                    page_views.append(template)
+            remove_objects(doc, page_views)
+        doc.removeObject(name)
+
+
+def remove_children(sliceform):
+    """Removes everything the sliceform made."""
+    remove_objects(sliceform.Document, owned_objects(sliceform))
 
 
 def template_for(sheets):
@@ -106,66 +309,232 @@ def template_for(sheets):
     return path
 
 
-def _make_page(doc, feature, i):
-    page = doc.addObject("TechDraw::DrawPage", "{}_Sheet{:02d}".format(feature.Name, i + 1))
-    page.Template = doc.addObject("TechDraw::DrawSVGTemplate", "{}_Template{:02d}".format(feature.Name, i + 1))
-    return page
+# ---------------------------------------------------------------------------------------------
+# sync: the children follow the design
 
 
-def _sheet_group(feature):
-    return _group(feature, "SheetGroup", "_SheetShapes", "sheet geometry")
+def _sheet_text(sheets):
+    return "{:g} x {:g} mm, margin {:g} mm".format(sheets["width"], sheets["height"], sheets["margin"])
 
 
-def _update_views(feature, page, patches):
-    """One view per patch (TechDraw's hidden-line pass grows much faster than the edge
-    count: 17 views of a sheet take 0.5 s, one view of it 8 s), each showing a hidden
-    Part::Feature with the patch's cut lines and labels in sheet millimetres."""
-    doc = feature.Document
-    group = _sheet_group(feature)
-
-    def make(i):
-        source = doc.addObject("Part::Feature", "{}_Part".format(page.Name))
-        source.Visibility = False
-        group.addObject(source)
-        view = doc.addObject("TechDraw::DrawViewPart", "{}_View".format(page.Name))
-        page.addView(view)
-        view.Source = [source]
-        return view
-
-    views = _reuse(doc, list(page.Views), len(patches), make)
-    for view, patch in zip(views, patches):
-        shape = geometry.patch_drawing(patch)
-        source = view.Source[0]
-        source.Shape = shape
-        source.Label = "{} {}".format(page.Label, patch["id"])
-        view.Label = "{} {}".format(page.Label, patch["id"])
-        view.Direction, view.XDirection = V(0, 0, 1), V(1, 0, 0)
-        view.ScaleType, view.Scale = "Custom", 1.0
-        # TechDraw centres a view on its shape's bounding box: put that centre where it is
-        # on the sheet, and the page shows the sheet at 1:1.
-        box = shape.BoundBox
-        view.X, view.Y = box.Center.x, box.Center.y
-        view.recompute()
-        view.purgeTouched()
-        source.purgeTouched()
+def _page_label(sliceform, index):
+    return "{} sheet {}".format(sliceform.Label, index + 1)
 
 
-def update_pages(feature, sheets):
-    """One TechDraw page per sheet: the nested layout at 1:1 on a template of the sheet's
-    size, patch by patch, labels included."""
-    doc = feature.Document
-    pages = _reuse(doc, list(feature.Pages), len(sheets["sheets"]), lambda i: _make_page(doc, feature, i))
-    template = template_for(sheets)
-    for i, (page, patches) in enumerate(zip(pages, sheets["sheets"])):
-        page.Label = "{} sheet {}".format(feature.Label, i + 1)
-        if page.Template.Template != template:
-            page.Template.Template = template
-        page.Template.recompute()
-        page.Template.purgeTouched()
-        _update_views(feature, page, patches)
-        if FreeCAD.GuiUp and hasattr(page.ViewObject, "ShowFrames"):
-            page.ViewObject.ShowFrames = False  # a sheet to cut, not a drawing: no view frames or labels
-        page.recompute()
-        page.purgeTouched()
-    feature.Pages = pages
-    return pages
+def wanted(sliceform):
+    """What the children should be for the sliceform's design: the patch ids in order, the
+    sheet of each, the pages (label and sheet size) and where the views sit; None when there
+    is no design to show."""
+    proxy = sliceform.Proxy
+    # Right after its recompute, a valid feature's design is the one its properties ask for.
+    if getattr(proxy, "design", None) is None or not sliceform.isValid() or "Touched" in sliceform.State:
+        return None
+    ids = [p["id"] for p in proxy.flat_patches(sliceform)]
+    sheets = proxy.sheets(sliceform)
+    sheet_of = {}
+    for s, patches in enumerate(sheets["sheets"]):
+        for p in patches:
+            sheet_of[p["id"]] = s
+    pages = [(_page_label(sliceform, i), _sheet_text(sheets)) for i in range(len(sheets["sheets"]))]
+    centre = (round(sheets["width"] / 2, 6), round(sheets["height"] / 2, 6))
+    return ids, [sheet_of.get(i, -1) for i in ids], pages, [centre] * len(ids)
+
+
+def shown(sliceform):
+    """What the children show now, in wanted()'s terms."""
+    patches = patches_of(sliceform)
+    ids = [p.PatchId for p in patches]
+    sheets, centres = [], []
+    page_of_view = {}
+    pages = pages_of(sliceform)
+    for page in pages:
+        for view in page.Views:
+            page_of_view[view.Name] = page.SheetIndex
+    for patch in patches:
+        sheet_patch = sheet_patch_of(patch)
+        views = [] if sheet_patch is None else [o for o in sheet_patch.InList if o.TypeId == "TechDraw::DrawViewPart"]
+        sheets.append(page_of_view.get(views[0].Name, -1) if len(views) == 1 else -2)
+        centres.append((round(views[0].X.Value, 6), round(views[0].Y.Value, 6)) if views else None)
+    return ids, sheets, [(p.Label, getattr(p, "Sheet", "")) for p in pages], centres
+
+
+def sync(sliceform, recompute=True):
+    """Makes the children match the design: adds or removes patches, sheet patches, views and
+    pages when the counts change, moves views between pages, sets the labels to the patch
+    ids, and recomputes what it changed. Does nothing when they match already. Returns
+    True when it changed the document."""
+    want = wanted(sliceform)
+    if want is None or want == shown(sliceform):
+        return False
+    ids, sheet_index, page_list, _centres = want
+    sheet_count = len(page_list)
+    doc = sliceform.Document
+    if _observer is not None:
+        _observer.pending.discard((doc.Name, sliceform.Name))
+    proxy = sliceform.Proxy
+    sheets = proxy.sheets(sliceform)
+    # An older document's children (the feature linked them) give way to the new ones.
+    old = [doc.getObject(n) for n in getattr(proxy, "old_children", [])]
+    remove_objects(doc, [o for o in old if o is not None])
+    proxy.old_children = []
+
+    # Patches and their sheet patches, by index.
+    patches = patches_of(sliceform)
+    extra = patches[len(ids):]
+    for patch in extra:
+        sheet_patch = sheet_patch_of(patch)
+        if sheet_patch is not None:
+            remove_objects(doc, [o for o in sheet_patch.InList if o.TypeId == "TechDraw::DrawViewPart"] + [sheet_patch])
+    remove_objects(doc, extra)
+    patches = patches[: len(ids)]
+    while len(patches) < len(ids):
+        patches.append(_new_patch(doc, sliceform, len(patches)))
+
+    # Pages, by sheet.
+    pages = pages_of(sliceform)
+    for page in pages[sheet_count:]:
+        template = page.Template
+        remove_objects(doc, [page] + ([template] if template is not None and not isinstance(template, str) else []))
+    pages = pages[:sheet_count]
+    while len(pages) < sheet_count:
+        pages.append(_new_page(doc, sliceform, len(pages)))
+    for i, page in enumerate(pages):
+        if page.Label != _page_label(sliceform, i):
+            page.Label = _page_label(sliceform, i)
+        if page.Sheet != _sheet_text(sheets):  # TechDraw keeps its own copy of the file
+            page.Template.Template = template_for(sheets)
+            page.Sheet = _sheet_text(sheets)
+
+    # Labels go through a temporary name first: FreeCAD keeps labels unique, and a label
+    # taken by a sibling for a moment would come out renumbered ("U002" for U1).
+    views = []
+    for patch, patch_id, s in zip(patches, ids, sheet_index):
+        sheet_patch = sheet_patch_of(patch) or _new_sheet_patch(doc, patch)
+        found = [o for o in sheet_patch.InList if o.TypeId == "TechDraw::DrawViewPart"]
+        for view in found[1:]:
+            remove_objects(doc, [view])
+        view = found[0] if found else _new_view(doc, pages[s], sheet_patch, sheets)
+        owner = [p for p in pages if view in p.Views]
+        if owner != [pages[s]]:
+            for page in owner:
+                page.removeView(view)
+            pages[s].addView(view)
+        if (round(view.X.Value, 6), round(view.Y.Value, 6)) != (round(sheets["width"] / 2, 6), round(sheets["height"] / 2, 6)):
+            view.X, view.Y = sheets["width"] / 2, sheets["height"] / 2
+        views.append((patch, sheet_patch, view))
+    labels = []
+    for (patch, sheet_patch, view), patch_id, s in zip(views, ids, sheet_index):
+        if patch.PatchId != patch_id:
+            patch.PatchId = patch_id
+        labels += [
+            (patch, "{} patch {}".format(sliceform.Label, patch_id)),
+            (sheet_patch, "{} on sheet {}".format(patch_id, s + 1)),
+            (view, patch_id),
+        ]
+    labels = [(obj, label) for obj, label in labels if obj.Label != label]
+    for obj, _label in labels:
+        obj.Label = obj.Name + "_"
+    for obj, label in labels:
+        obj.Label = label
+
+    # The new and changed children are built now, by a recompute of the document (none
+    # can run inside another: then each is built alone and stays marked for recompute).
+    changed = [p.Template for p in pages] + [o for v in views for o in v] + pages
+    if recompute:
+        doc.recompute([o for o in changed if "Touched" in o.State])
+    else:
+        order = [p.Template for p in pages] + [v[i] for i in range(3) for v in views] + pages
+        for obj in order:
+            if "Touched" in obj.State:
+                obj.recompute()
+    # The tree asks a parent for its children when the parent changes; these link to it,
+    # so it has not. ChildCount is an output: setting it marks nothing for recompute.
+    sliceform.ChildCount = len(patches) + len(pages)
+    return True
+
+
+# ---------------------------------------------------------------------------------------------
+# The document recompute: a source edit that changes the count is followed by a sync,
+# inside the transaction of that edit.
+
+
+class _Observer:
+    """Follows every document recompute: a sliceform recomputed inside a transaction (a
+    property edited in the property editor, a command) gets its children synced just
+    before that transaction closes, so what changes is part of the same Undo step. Outside
+    any transaction (a script with Undo off) they are synced right after the recompute."""
+
+    def __init__(self):
+        self.busy = False
+        self.pending = set()  # (document, sliceform) names recomputed and not synced yet
+
+    def slotRecomputedObject(self, obj):
+        if _proxy_type(obj) == "Sliceform":
+            self.pending.add((obj.Document.Name, obj.Name))
+
+    def slotRecomputedDocument(self, doc):
+        from sliceform_app import feature
+
+        feature.restore_traceback()
+        if getattr(doc, "HasPendingTransaction", False):
+            return  # synced before the transaction closes
+        # No transaction: nothing to keep in one Undo step. No recompute can run inside
+        # this one: the GUI syncs as soon as it is over; without it, the new children are
+        # built one by one now and stay marked for the next recompute.
+        if FreeCAD.GuiUp:
+            from PySide import QtCore
+
+            name = doc.Name
+            QtCore.QTimer.singleShot(0, lambda: self._sync(lambda d: d == name, recompute=True))
+        else:
+            self._sync(lambda d: d == doc.Name, recompute=False)
+
+    def slotBeforeCloseTransaction(self, abort):
+        if abort:
+            self.pending.clear()  # the document goes back to what it was
+        else:
+            self._sync(lambda d: True, recompute=True)
+
+    def _sync(self, which, recompute):
+        if self.busy:
+            return
+        names = [(d, n) for d, n in self.pending if which(d)]
+        self.pending.difference_update(names)
+        self.busy = True
+        try:
+            for d, n in names:
+                doc = FreeCAD.listDocuments().get(d)
+                obj = doc.getObject(n) if doc is not None else None
+                if obj is None or getattr(doc, "Transacting", False) or not is_sliceform(obj):
+                    continue
+                try:
+                    sync(obj, recompute)
+                except Exception as e:  # never break the user's edit
+                    FreeCAD.Console.PrintError("Sliceform: {}\n".format(e))
+        finally:
+            self.busy = False
+
+
+_observer = None
+
+
+class held:
+    """with held(): doc.recompute(); sync(obj) -- the caller syncs, the observer waits."""
+
+    def __enter__(self):
+        self.was = _observer.busy if _observer else False
+        self.pending = set(_observer.pending) if _observer else set()
+        if _observer:
+            _observer.busy = True
+
+    def __exit__(self, *exc):
+        if _observer:
+            _observer.busy = self.was
+            _observer.pending = self.pending
+
+
+def install_observer():
+    global _observer
+    if _observer is None:
+        _observer = _Observer()
+        FreeCAD.addDocumentObserver(_observer)

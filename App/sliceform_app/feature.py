@@ -1,8 +1,10 @@
 # SPDX-License-Identifier: LGPL-2.1-or-later
-"""The parametric Sliceform feature (Part::FeaturePython). Its shape is the assembled
-sliceform at FoldAngle; its children are a sketch per patch and a TechDraw page per sheet.
-State lives in properties; the proxy keeps only the last design in memory (never saved),
-so that a FoldAngle change re-poses the patches without designing again."""
+"""The parametric Sliceform feature (Part::FeaturePython). Its only input is its Source; its
+shape is the assembled sliceform at FoldAngle. Its children (children.py: a patch per
+patch, a TechDraw page per sheet) link to it and build themselves from its design. State
+lives in properties; the proxy keeps the last few designs in memory (never saved), so that
+a FoldAngle change re-poses the patches without designing again, and designs again on
+demand where a design is needed after a reopen (Export, the report)."""
 import hashlib
 import json
 
@@ -11,10 +13,21 @@ import Part
 
 from sliceform_app import children, native, parameters, shapes
 
+children.install_observer()
+
+
+QT_TRANSLATE_NOOP = FreeCAD.Qt.QT_TRANSLATE_NOOP
+
+
+# Properties of documents made before the children linked to the feature: the feature then
+# linked its children (sketches in a group, pages, a group of sheet geometry).
+OLD_CHILD_LINKS = ("PatchGroup", "PatchSketches", "Pages", "SheetGroup")
+
 
 def initProperties(obj):
     """Adds what is missing and sets modes: the one schema migration, idempotent, called
-    from __init__ and onDocumentRestored."""
+    from __init__ and onDocumentRestored. Returns the objects an older document's feature
+    linked as its children (to be replaced by children that link to it)."""
     have = set(obj.PropertiesList)
 
     def add(kind, name, group, tip):
@@ -23,8 +36,10 @@ def initProperties(obj):
             return True
         return False
 
-    add("App::PropertyLink", "Source", "Sliceform", "The solid, body or mesh to design a sliceform for")
-    if add("App::PropertyAngle", "FoldAngle", "Sliceform", "Angle between the families: 90 popped up, small folds flat"):
+    add("App::PropertyLink", "Source", "Sliceform",
+        QT_TRANSLATE_NOOP("App::Property", "The solid, body or mesh to design a sliceform for"))
+    if add("App::PropertyAngle", "FoldAngle", "Sliceform",
+           QT_TRANSLATE_NOOP("App::Property", "Angle between the families: 90 popped up, small folds flat")):
         obj.FoldAngle = 90.0
     for name, kind, group, default, _key, tip in parameters.PARAMETERS:
         if add(kind, name, group, tip):
@@ -34,24 +49,104 @@ def initProperties(obj):
                 setattr(obj, name, default)
     for name, kind, tip in parameters.RESULTS:
         add(kind, name, "Results", tip)
-        obj.setEditorMode(name, 1)  # read-only
-    add("App::PropertyLink", "PatchGroup", "Children", "Group holding the patch sketches")
-    add("App::PropertyLinkList", "PatchSketches", "Children", "One sketch per patch, in patch order")
-    add("App::PropertyLinkList", "Pages", "Children", "One TechDraw page per sheet")
-    add("App::PropertyLink", "SheetGroup", "Children", "Group holding the sheet geometry the pages show")
-    for name in ("PatchGroup", "PatchSketches", "Pages", "SheetGroup"):
-        obj.setEditorMode(name, 1)
+        if "ReadOnly" not in obj.getEditorMode(name):
+            obj.setEditorMode(name, 1)  # read-only
+    if "ChildCount" not in have:
+        # Output and hidden (attr 8 | 4): changing it never marks the feature for recompute.
+        obj.addProperty("App::PropertyInteger", "ChildCount", "Children",
+                        QT_TRANSLATE_NOOP("App::Property", "Patches and pages made for the design"), 12)
+    old = []
+    for name in OLD_CHILD_LINKS:
+        if name in have:
+            value = getattr(obj, name)
+            old.extend(v for v in (value if isinstance(value, list) else [value]) if v is not None)
+            obj.removeProperty(name)
+    return old
 
 
-def source_of(obj):
+def _old_children(objects):
+    """The objects an old-style feature held, with what only they used: group members, a
+    page's views, template and the views' sources."""
+    out = []
+
+    def visit(o):
+        if o is None or o in out:
+            return
+        if o.TypeId == "App::DocumentObjectGroup":
+            for member in o.Group:
+                visit(member)
+        elif o.TypeId == "TechDraw::DrawPage":
+            for view in o.Views:
+                visit(view)
+            if o.Template is not None and not isinstance(o.Template, str):
+                visit(o.Template)
+        elif o.TypeId == "TechDraw::DrawViewPart":
+            out.append(o)
+            for source in o.Source:
+                visit(source)
+            return
+        out.append(o)
+
+    for o in objects:
+        visit(o)
+    return out
+
+
+def source_of(obj, size=0.0):
     """What the core takes for a source object: triangles for meshes, a BREP otherwise,
-    both in global placement."""
+    both in global placement. A size > 0 scales the source about the centre of its box so
+    that its longest side is that long: the sliceform stands where the source is."""
     if obj is None:
-        raise ValueError("the sliceform has no Source: link a solid, body or mesh")
+        raise DesignError(QT_TRANSLATE_NOOP("Sliceform", "the sliceform has no Source: link a solid, body or mesh"))
     if shapes.is_mesh(obj):
         points, triangles = shapes.mesh_lists_of(obj)
+        if size > 0 and points:
+            lo = [min(p[i] for p in points) for i in range(3)]
+            hi = [max(p[i] for p in points) for i in range(3)]
+            longest = max(h - l for h, l in zip(hi, lo))
+            if longest > 0:
+                f = size / longest
+                c = [(h + l) / 2 for h, l in zip(hi, lo)]
+                points = [tuple(c[i] + (p[i] - c[i]) * f for i in range(3)) for p in points]
         return {"points": points, "triangles": triangles, "name": obj.Label}
-    return {"brep": shapes.brep_of(obj), "name": obj.Label}
+    return {"brep": shapes.brep_of(obj, size), "name": obj.Label}
+
+
+class DesignError(Exception):
+    """A failure the user can act on (bad source, parameters, or an unbuildable design):
+    shown as the feature's error with the property names, never as a traceback."""
+
+
+_saved_limit = []  # sys.tracebacklimit while it is held at 0, as [had it, its value]
+
+
+def _quiet_traceback():
+    """FreeCAD reports an exception raised in execute() with its Python stack, formatted by
+    the traceback module as the recompute catches it. For a DesignError only the message
+    is meant for the user: the stack is cut to nothing until the recompute is over."""
+    import sys
+
+    if not _saved_limit:
+        _saved_limit[:] = [hasattr(sys, "tracebacklimit"), getattr(sys, "tracebacklimit", None)]
+        sys.tracebacklimit = 0
+        if FreeCAD.GuiUp:
+            from PySide import QtCore
+
+            QtCore.QTimer.singleShot(0, restore_traceback)
+
+
+def restore_traceback():
+    """Gives tracebacks back their length: at the end of every document recompute (the
+    children's observer), at the start of the next execute, or on the GUI's next turn."""
+    import sys
+
+    if _saved_limit:
+        had, value = _saved_limit
+        if had:
+            sys.tracebacklimit = value
+        elif hasattr(sys, "tracebacklimit"):
+            del sys.tracebacklimit
+        del _saved_limit[:]
 
 
 def _key(source, params):
@@ -107,77 +202,172 @@ class Progress:
         self.bar.stop()
 
 
+def chosen_directions(report):
+    """The frame `directions: auto` chose, as the ChosenDirections result; "given" else."""
+    d = report.get("directions")
+    if not d:
+        return "given"
+    u, v = report["parameters"]["u"], report["parameters"]["v"]
+    return "{} (U {:.3f}, {:.3f}, {:.3f}; V {:.3f}, {:.3f}, {:.3f})".format(d["why"], *u, *v)
+
+
 class Sliceform:
-    """Proxy of the Sliceform feature."""
+    """Proxy of the Sliceform feature. The design lives in memory only (a few recent ones,
+    by a key of the source and the parameters), so a FoldAngle change re-poses the patches
+    without designing again, and Cancel goes back to the design before at once."""
+
+    Type = "Sliceform"
+    KEEP = 3  # designs kept in memory
 
     def __init__(self, obj):
         obj.Proxy = self
         initProperties(obj)
-        self.design = None
-        self.key = None
+        self._forget()
+
+    def _forget(self):
+        self.designs = {}  # key -> (design, report, flat patches, sheets)
+        self.design, self.key, self.report = None, None, None
 
     def onDocumentRestored(self, obj):
-        initProperties(obj)
-        self.design, self.key = None, None
+        old = initProperties(obj)
+        self._forget()
+        if old:
+            # An older document: its children were inputs of the feature. They go at the
+            # next sync, which makes the new ones (Export and the tree work before that).
+            self.old_children = [o.Name for o in _old_children(old)]
 
-    # Nothing of the proxy is saved: FreeCAD 0.20 calls __getstate__, later versions dumps.
+    # Only the type is saved: FreeCAD 0.20 calls __getstate__, later versions dumps.
     def __getstate__(self):
-        return None
+        return {"Type": self.Type}
 
     def __setstate__(self, state):
-        self.design, self.key = None, None
+        self._forget()
 
     def dumps(self):
-        return None
+        return self.__getstate__()
 
     def loads(self, state):
-        self.design, self.key = None, None
+        self._forget()
 
-    def execute(self, obj):
-        source = source_of(obj.Source)
+    # --- the design, on demand ------------------------------------------------------------
+
+    def _inputs(self, obj):
         params = parameters.core_params(obj)
-        key = _key(source, params)
-        if getattr(self, "design", None) is None or key != getattr(self, "key", None):
+        size = params.pop("size", 0.0)
+        source = source_of(obj.Source, size)
+        return source, params, _key(source, dict(params, size=size))
+
+    def ensure_design(self, obj):
+        """The design for the feature's source and properties as they are: the one in
+        memory, or designed now (after a reopen, an Undo or a Cancel). Raises DesignError
+        with the property names when it cannot be made."""
+        try:
+            source, params, key = self._inputs(obj)
+        except DesignError:
+            raise
+        except (ValueError, RuntimeError) as e:
+            raise DesignError(parameters.property_message(str(e))) from None
+        if key == self.key and self.design is not None:
+            return self.design
+        if key not in self.designs:
             progress = Progress()
             try:
-                self.design = native().design(source, params, progress)
-            except Exception:
-                self.design, self.key = None, None
-                raise
+                design = native().design(source, params, progress)
+            except native().Error as e:
+                raise DesignError(parameters.property_message(str(e))) from None
             finally:
                 progress.stop()
-            self.key = key
-            report = json.loads(self.design.report_json())
-            self.report = report
-            self._set_results(obj, report)
-            children.update_sketches(obj, self.design.flat_patches())
-            children.update_pages(obj, self.design.sheets())
+            report = json.loads(design.report_json())
+            self.designs[key] = (design, report, None, None)
+            while len(self.designs) > self.KEEP:
+                self.designs.pop(next(iter(self.designs)))
+        self.key = key
+        self.design, self.report = self.designs[key][:2]
+        return self.design
+
+    def design_now(self, obj):
+        """The design in memory when the feature is up to date (its children ask while a
+        recompute builds them, right after the feature's own execute), else ensure_design."""
+        if self.design is not None and obj.isValid() and "Touched" not in obj.State:
+            return self.design
+        return self.ensure_design(obj)
+
+    def _cached(self, obj, slot, make):
+        self.design_now(obj)
+        entry = list(self.designs[self.key])
+        if entry[slot] is None:
+            entry[slot] = make(self.design)
+            self.designs[self.key] = tuple(entry)
+        return entry[slot]
+
+    def flat_patches(self, obj):
+        """The flat patches of the current design (see sliceform_native.Design)."""
+        return self._cached(obj, 2, lambda d: d.flat_patches())
+
+    def sheets(self, obj):
+        """The nested sheets of the current design."""
+        return self._cached(obj, 3, lambda d: d.sheets())
+
+    def sheet_drawings(self, obj):
+        """Patch id -> its drawing on its sheet."""
+        return {p["id"]: p for sheet in self.sheets(obj)["sheets"] for p in sheet}
+
+    # --- the feature ------------------------------------------------------------------------
+
+    def execute(self, obj):
+        restore_traceback()
+        try:
+            self._execute(obj)
+        except DesignError:
+            _quiet_traceback()
+            raise
+
+    def _execute(self, obj):
+        design = self.ensure_design(obj)
+        report = self.report
+        self._set_results(obj, report)
         shape = Part.Shape()
-        shape.importBrepFromString(self.design.assembly(float(obj.FoldAngle.Value)))
+        shape.importBrepFromString(design.assembly(float(obj.FoldAngle.Value)))
         obj.Shape = shape
+        problems = report["verdict"]["problems"]
+        if not report["verdict"]["buildable"]:
+            raise DesignError(
+                parameters.property_message(
+                    FreeCAD.Qt.translate("Sliceform", "cannot be built: ")
+                    + "; ".join(problems or [FreeCAD.Qt.translate("Sliceform", "see the report")])
+                )
+            )
 
     def _set_results(self, obj, report):
-        obj.PatchCount = len(report["patches"])
-        obj.Stable = bool(report["certificate"]["stable"])
-        obj.Interlocks = int(report["interlocks"]["remaining"])
-        obj.SmallestSlotEdgeDistance = float(report["min_slot_edge_distance_mm"])
-        obj.ShortestHinge = float(report["min_hinge_length_mm"])
-        obj.MinPatchSpacing = float(report.get("min_patch_spacing_mm") or 0.0)
-        obj.MinFinger = max(0.0, float(report.get("min_finger_mm") or 0.0))
-        obj.Buildable = bool(report["verdict"]["buildable"])
-        obj.VolumeIoU = float(report["quality"]["volume_iou"])
-        obj.SheetCount = int(report["sheets"]["count"])
-        obj.Report = summary(report)
+        values = {
+            "PatchCount": len(report["patches"]),
+            "Stable": bool(report["certificate"]["stable"]),
+            "Interlocks": int(report["interlocks"]["remaining"]),
+            "SmallestSlotEdgeDistance": float(report["min_slot_edge_distance_mm"]),
+            "ShortestHinge": float(report["min_hinge_length_mm"]),
+            "MinPatchSpacing": float(report.get("min_patch_spacing_mm") or 0.0),
+            "MinFinger": max(0.0, float(report.get("min_finger_mm") or 0.0)),
+            "Buildable": bool(report["verdict"]["buildable"]),
+            "VolumeIoU": float(report["quality"]["volume_iou"]),
+            "SheetCount": int(report["sheets"]["count"]),
+            "ChosenDirections": chosen_directions(report),
+            "Report": parameters.property_message(summary(report)),
+        }
+        for name, value in values.items():
+            old = getattr(obj, name)
+            old = old.Value if hasattr(old, "Value") else old
+            if old != value:  # an unchanged result is not a change to undo
+                setattr(obj, name, value)
 
-    def report_json(self):
-        """report.json's text of the last design, or None before the first recompute."""
-        return self.design.report_json() if getattr(self, "design", None) is not None else None
+    def report_json(self, obj):
+        """report.json's text of the feature's design, designed now if needed."""
+        return self.ensure_design(obj).report_json()
 
-    def write_files(self, folder, fold_angle=90.0):
-        """Writes the same files as `sliceform design -o folder`."""
-        if getattr(self, "design", None) is None:
-            raise RuntimeError("recompute the sliceform first")
-        return self.design.write_files(folder, fold_angle)
+    def write_files(self, obj, folder, fold_angle=None):
+        """Writes the same files as `sliceform design -o folder`, designing first if needed
+        (after a reopen the design is not in memory)."""
+        angle = float(obj.FoldAngle.Value) if fold_angle is None else fold_angle
+        return self.ensure_design(obj).write_files(folder, angle)
 
 
 PREFERENCES = "User parameter:BaseApp/Preferences/Mod/Sliceform"
@@ -199,10 +389,16 @@ def preferred_properties():
     return values
 
 
+MESH_SIZE = 150.0  # mm, longest side of a mesh source unless given
+
+
 def makeSliceform(source, doc=None, **properties):
     """Adds a Sliceform feature for `source` (any shape-bearing object or a mesh), sets
-    the preferred defaults and then the given properties, and recomputes. Returns it."""
+    the preferred defaults (Size 150 for a mesh, which carries no unit) and then the given
+    properties, recomputes it and makes its children. Returns it."""
     doc = doc or source.Document
+    if shapes.is_mesh(source) and "Size" not in properties:
+        properties["Size"] = MESH_SIZE  # a mesh carries no unit: the CLI's default size
     obj = doc.addObject("Part::FeaturePython", "Sliceform")
     Sliceform(obj)
     obj.Source = source
@@ -213,5 +409,7 @@ def makeSliceform(source, doc=None, **properties):
         from sliceform_gui import view_provider
 
         view_provider.ViewProviderSliceform(obj.ViewObject)
-    doc.recompute()
+    with children.held():
+        doc.recompute()
+        children.sync(obj)
     return obj

@@ -6,6 +6,10 @@ side are the CLI's (`sliceform design --help`)."""
 # (property, FreeCAD type, group, default, core key, tooltip)
 # Enumerations have their choices as default (the first is selected).
 PARAMETERS = (
+    ("Directions", "App::PropertyEnumeration", "Slicing", ["given", "auto"], "directions",
+     "auto (new features): slicing directions chosen for the model (its principal and the file's "
+     "axes, each up, the families turned about it; ChosenDirections says which); given: "
+     "UDirection and VDirection"),
     ("UDirection", "App::PropertyVector", "Slicing", (1.0, 0.0, 0.0), "u",
      "Normal of the U family of patches (global coordinates)"),
     ("VDirection", "App::PropertyVector", "Slicing", (0.0, 1.0, 0.0), "v",
@@ -61,6 +65,8 @@ RESULTS = (
     ("Buildable", "App::PropertyBool", "The design meets every rule of the fabrication contract"),
     ("VolumeIoU", "App::PropertyFloat", "Volume IoU of the sliceform against the source (1 = perfect)"),
     ("SheetCount", "App::PropertyInteger", "Sheets used by the layout"),
+    ("ChosenDirections", "App::PropertyString",
+     "With Directions auto: the frame chosen, its U and V, and why it won"),
     ("Report", "App::PropertyString", "Summary of the last recompute"),
 )
 
@@ -80,3 +86,27 @@ def core_params(obj):
     if obj.SheetSize == "Custom":
         params["sheet"] = "{:g}x{:g}".format(float(obj.SheetWidth.Value), float(obj.SheetHeight.Value))
     return params
+
+
+# Options of the command line that have no property of their own, by what they are here.
+_OPTION_PROPERTIES = {"sheet": "SheetSize", "u": "UDirection", "v": "VDirection", "no-rotate": "Rotate"}
+
+
+def option_properties():
+    """CLI option (without --) -> property name, from the table."""
+    out = {key.replace("_", "-"): name for name, _kind, _group, _default, key, _tip in PARAMETERS if key}
+    out.update(_OPTION_PROPERTIES)
+    return out
+
+
+def property_message(text):
+    """The core's message in FreeCAD's words: the CLI's options (--sheet, --size, ...) become
+    the properties that set them (SheetSize, Size, ...)."""
+    import re
+
+    names = option_properties()
+
+    def named(match):
+        return names.get(match.group(1), match.group(0))
+
+    return re.sub(r"--([a-z][a-z0-9-]*)", named, text)

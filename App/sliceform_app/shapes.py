@@ -9,11 +9,17 @@ def is_mesh(obj):
     return obj.isDerivedFrom("Mesh::Feature")
 
 
-def brep_of(obj):
-    """The object's shape, placed globally, as a BREP string."""
+def brep_of(obj, size=0.0):
+    """The object's shape, placed globally, as a BREP string; with a size > 0, scaled about
+    the centre of its box so that its longest side is that long."""
     shape = Part.getShape(obj)  # applies the placements of the object and its containers
     if shape.isNull():
         raise ValueError("{} has no shape".format(obj.Label))
+    box = shape.BoundBox
+    longest = max(box.XLength, box.YLength, box.ZLength)
+    if size > 0 and longest > 0:
+        shape = shape.copy()
+        shape.scale(size / longest, box.Center)
     return shape.exportBrepToString()
 
 

@@ -84,13 +84,28 @@ class CreateCommand:
         doc = FreeCAD.ActiveDocument
         source = _selected_solid()
         doc.openTransaction("Create sliceform")
-        obj = feature.makeSliceform(source, doc)
-        # Kept even when the design fails: the feature shows the error and can be edited.
+        # A feature made here chooses its slicing directions for the model (unless the
+        # preference Directions says "given"); made from Python (makeSliceform) it keeps the
+        # property's default, the directions given, as documents from before the property do.
+        directions = FreeCAD.ParamGet(feature.PREFERENCES).GetString("Directions", "auto")
+        directions = "given" if directions == "given" else "auto"
+        # Through the console, so the Python console and a recorded macro show the call.
+        before = {o.Name for o in doc.Objects}
+        FreeCADGui.addModule("sliceform_app.feature")
+        FreeCADGui.doCommand(
+            "sliceform_app.feature.makeSliceform(FreeCAD.ActiveDocument.getObject({!r}), Directions={!r})".format(
+                source.Name, directions
+            )
+        )
+        made = [o for o in doc.Objects if o.Name not in before and _is_sliceform(o)]
+        if not made:
+            doc.abortTransaction()
+            return
+        obj = made[0]
+        # Kept even when the design fails: the feature shows the error (FreeCAD reports it
+        # once) and can be edited; the source is hidden either way, Delete shows it again.
+        source.ViewObject.Visibility = False
         doc.commitTransaction()
-        if obj.isValid():
-            source.ViewObject.Visibility = False
-        else:
-            _error(obj.getStatusString())
         FreeCADGui.Selection.clearSelection()
         FreeCADGui.Selection.addSelection(obj)
 
@@ -136,7 +151,7 @@ class ExportCommand:
         if not folder:
             return
         try:
-            files = obj.Proxy.write_files(folder, float(obj.FoldAngle.Value))
+            files = obj.Proxy.write_files(obj, folder)
         except Exception as e:
             _error(e)
             return
@@ -146,40 +161,69 @@ class ExportCommand:
 
 
 class FoldCommand:
-    """Sweeps FoldAngle from popped up to nearly flat and back."""
+    """Sweeps FoldAngle from popped up to nearly flat and back in SECONDS, however long a
+    frame takes (a slow frame makes fewer frames, not a longer animation); the command again
+    stops it, and the angle is put back either way."""
 
-    STEPS = 24
+    SECONDS = 2.0
+    FLAT = 10.0  # degrees at the middle of the sweep
+
+    def __init__(self):
+        self.timer = None
 
     def GetResources(self):
         return {
             "Pixmap": icon_path("Sliceform_Fold.svg"),
             "MenuText": "Fold animation",
             "ToolTip": "Animate the selected sliceform folding flat and popping up again "
-            "(FoldAngle 90 to 10 degrees and back; the angle is restored after)",
+            "(FoldAngle 90 to 10 degrees and back in 2 s; the angle is restored after). "
+            "Run it again to stop.",
         }
 
     def IsActive(self):
-        return _selected_sliceform() is not None
+        return self.running() or _selected_sliceform() is not None
+
+    def running(self):
+        return self.timer is not None and self.timer.isActive()
 
     def Activated(self):
+        import time
+
         from PySide import QtCore
 
+        if self.running():
+            self.stop()
+            return
         obj = _selected_sliceform()
-        start = float(obj.FoldAngle.Value)
-        down = [90 - 80 * i / self.STEPS for i in range(self.STEPS + 1)]
-        angles = down + down[::-1] + [start]
-        self.timer = QtCore.QTimer()
+        self.obj, self.start = obj, float(obj.FoldAngle.Value)
+        began = time.monotonic()
 
         def step():
-            if not angles or not obj.isValid():
-                self.timer.stop()
+            if not obj.isValid():
+                self.stop()
                 return
-            obj.FoldAngle = angles.pop(0)
+            t = (time.monotonic() - began) / self.SECONDS
+            if t >= 1:
+                self.stop()
+                return
+            # Down and up again: 90 at t = 0 and 1, FLAT at t = 0.5.
+            obj.FoldAngle = 90 - (90 - self.FLAT) * (1 - abs(2 * t - 1))
             obj.recompute()  # only re-poses the patches: the design is kept in memory
             FreeCADGui.updateGui()
 
+        self.timer = QtCore.QTimer()
         self.timer.timeout.connect(step)
-        self.timer.start(40)
+        self.timer.start(0)
+
+    def stop(self):
+        """Stops the animation and puts the angle back."""
+        if self.timer is not None:
+            self.timer.stop()
+        obj, self.timer = getattr(self, "obj", None), None
+        if obj is not None and obj.isValid():
+            obj.FoldAngle = self.start
+            obj.recompute()
+            FreeCADGui.updateGui()
 
 
 class ReportCommand:
@@ -207,12 +251,50 @@ class ReportCommand:
         save = box.addButton("Save report.json...", QtGui.QMessageBox.ActionRole)
         box.addButton(QtGui.QMessageBox.Close)
         box.exec_()
-        report = obj.Proxy.report_json()
-        if box.clickedButton() == save and report:
+        if box.clickedButton() != save:
+            return
+        try:
+            report = obj.Proxy.report_json(obj)  # designed now if not in memory (after a reopen)
+        except Exception as e:
+            _error(e)
+            return
+        if report:
             path, _ = QtGui.QFileDialog.getSaveFileName(box, "Save report", "report.json", "JSON (*.json)")
             if path:
                 with open(path, "w") as f:
                     f.write(report)
+
+
+class AssemblyStepsCommand:
+    """Steps through the selected sliceform's assembly order in the 3D view."""
+
+    def GetResources(self):
+        from PySide.QtCore import QT_TRANSLATE_NOOP
+
+        return {
+            "Pixmap": icon_path("Sliceform_Steps.svg"),
+            "MenuText": QT_TRANSLATE_NOOP("Sliceform_AssemblySteps", "Assembly steps"),
+            "ToolTip": QT_TRANSLATE_NOOP(
+                "Sliceform_AssemblySteps",
+                "Step through the selected sliceform's assembly order: the patches placed so far, the "
+                "new one in orange, and the partners its slots go onto (a display mode: the document "
+                "is not changed)",
+            ),
+        }
+
+    def IsActive(self):
+        return _selected_sliceform() is not None and not FreeCADGui.Control.activeDialog()
+
+    def Activated(self):
+        from sliceform_gui import assembly_steps
+
+        obj = _selected_sliceform()
+        try:
+            panel = assembly_steps.AssemblyStepsPanel(obj)
+        except Exception as e:
+            _error(e)
+            return
+        FreeCADGui.Control.showDialog(panel)
 
 
 COMMANDS = {
@@ -220,6 +302,7 @@ COMMANDS = {
     "Sliceform_Edit": EditCommand,
     "Sliceform_Export": ExportCommand,
     "Sliceform_Fold": FoldCommand,
+    "Sliceform_AssemblySteps": AssemblyStepsCommand,
     "Sliceform_Report": ReportCommand,
     "Sliceform_Slices": SlicesCommand,
 }
@@ -235,5 +318,10 @@ def register():
         _error(e)
         return []
     for name, command in COMMANDS.items():
-        FreeCADGui.addCommand(name, command())
+        made = command()
+        COMMANDS_MADE.append(made)
+        FreeCADGui.addCommand(name, made)
     return list(COMMANDS)
+
+
+COMMANDS_MADE = []  # the command objects registered, for the GUI tests

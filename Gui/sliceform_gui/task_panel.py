@@ -1,23 +1,38 @@
 # SPDX-License-Identifier: LGPL-2.1-or-later
 """Task panel to edit a sliceform: the parameters a maker changes most, a Recompute button
-and the results. Every change is one undoable transaction; Cancel undoes it."""
+and the results. The panel is one transaction: OK commits it as one Undo step, Cancel
+aborts it, which gives back exactly the document from before the panel opened (the
+children a trial Recompute added or removed included)."""
 import FreeCAD
 import FreeCADGui
 from PySide import QtCore, QtGui
 
+
+QT_TRANSLATE_NOOP = FreeCAD.Qt.QT_TRANSLATE_NOOP
+translate = FreeCAD.Qt.translate
+
+
 # (property, label, minimum, maximum, step, decimals) for the spin boxes
 NUMBERS = (
-    ("Slices", "Slices per direction", 4, 2048, 8, 0),
-    ("Thickness", "Material thickness (mm)", 0.05, 20, 0.05, 2),
-    ("Clearance", "Slot clearance (mm)", 0, 5, 0.05, 2),
-    ("Kerf", "Cutter kerf (mm)", 0, 2, 0.01, 2),
-    ("MinHingeLength", "Shortest hinge (mm)", 0.5, 100, 0.5, 1),
-    ("MinSlotEdgeDistance", "Paper beside a slot (mm)", 0.2, 50, 0.5, 1),
-    ("TauA", "Cylinder error budget (tauA)", 0.001, 1, 0.01, 3),
-    ("Margin", "Sheet margin (mm)", 0, 100, 1, 1),
-    ("FoldAngle", "Fold angle (degrees)", 1, 90, 5, 0),
+    ("Slices", QT_TRANSLATE_NOOP("Sliceform", "Slices per direction"), 4, 2048, 8, 0),
+    ("Size", QT_TRANSLATE_NOOP("Sliceform", "Size: longest side (mm, 0 keeps the source's)"), 0, 100000, 10, 1),
+    ("Thickness", QT_TRANSLATE_NOOP("Sliceform", "Material thickness (mm)"), 0.05, 20, 0.05, 2),
+    ("Clearance", QT_TRANSLATE_NOOP("Sliceform", "Slot clearance (mm)"), 0, 5, 0.05, 2),
+    ("Kerf", QT_TRANSLATE_NOOP("Sliceform", "Cutter kerf (mm)"), 0, 2, 0.01, 2),
+    ("MinHingeLength", QT_TRANSLATE_NOOP("Sliceform", "Shortest hinge (mm)"), 0.5, 100, 0.5, 1),
+    ("MinSlotEdgeDistance", QT_TRANSLATE_NOOP("Sliceform", "Paper beside a slot (mm)"), 0.2, 50, 0.5, 1),
+    ("TauA", QT_TRANSLATE_NOOP("Sliceform", "Cylinder error budget (tauA)"), 0.001, 1, 0.01, 3),
+    ("Margin", QT_TRANSLATE_NOOP("Sliceform", "Sheet margin (mm)"), 0, 100, 1, 1),
+    ("Spacing", QT_TRANSLATE_NOOP("Sliceform", "Space between patches (mm)"), 0, 100, 1, 1),
+    ("SheetWidth", QT_TRANSLATE_NOOP("Sliceform", "Custom sheet width (mm)"), 10, 10000, 10, 1),
+    ("SheetHeight", QT_TRANSLATE_NOOP("Sliceform", "Custom sheet height (mm)"), 10, 10000, 10, 1),
+    ("FoldAngle", QT_TRANSLATE_NOOP("Sliceform", "Fold angle (degrees)"), 1, 90, 5, 0),
 )
-CHOICES = (("Scheme", "Scheme"), ("SheetSize", "Sheet"), ("SlotEnd", "Slot ends"))
+CHOICES = (
+    ("Scheme", QT_TRANSLATE_NOOP("Sliceform", "Scheme")),
+    ("SheetSize", QT_TRANSLATE_NOOP("Sliceform", "Sheet")),
+    ("SlotEnd", QT_TRANSLATE_NOOP("Sliceform", "Slot ends")),
+)
 
 
 def _value(obj, name):
@@ -42,7 +57,7 @@ class SliceformTaskPanel:
             box.setSingleStep(step)
             box.setValue(int(_value(obj, name)) if decimals == 0 else _value(obj, name))
             box.setToolTip(obj.getDocumentationOfProperty(name))
-            layout.addRow(label, box)
+            layout.addRow(translate("Sliceform", label), box)
             self.numbers[name] = box
         self.choices = {}
         for name, label in CHOICES:
@@ -50,9 +65,9 @@ class SliceformTaskPanel:
             combo.addItems(obj.getEnumerationsOfProperty(name))
             combo.setCurrentIndex(combo.findText(getattr(obj, name)))
             combo.setToolTip(obj.getDocumentationOfProperty(name))
-            layout.addRow(label, combo)
+            layout.addRow(translate("Sliceform", label), combo)
             self.choices[name] = combo
-        self.button = QtGui.QPushButton("Recompute")
+        self.button = QtGui.QPushButton(translate("Sliceform", "Recompute"))
         self.button.clicked.connect(self.recompute)
         layout.addRow(self.button)
         self.results = QtGui.QPlainTextEdit()
@@ -70,19 +85,23 @@ class SliceformTaskPanel:
                 setattr(self.obj, name, combo.currentText())
 
     def recompute(self):
+        from sliceform_app import children
+
         self.apply()
         QtGui.QApplication.setOverrideCursor(QtCore.Qt.WaitCursor)
         try:
-            self.doc.recompute()
+            with children.held():
+                self.doc.recompute()
+                children.sync(self.obj)  # inside the panel's transaction
         finally:
             QtGui.QApplication.restoreOverrideCursor()
         self.show_results()
 
     def show_results(self):
         if self.obj.isValid():
-            self.results.setPlainText(self.obj.Report or "Not computed yet: press Recompute.")
+            self.results.setPlainText(self.obj.Report or translate("Sliceform", "Not computed yet: press Recompute."))
         else:
-            self.results.setPlainText("Error: " + self.obj.getStatusString())
+            self.results.setPlainText(translate("Sliceform", "Error: ") + self.obj.getStatusString())
 
     def getStandardButtons(self):
         return int(QtGui.QDialogButtonBox.Ok | QtGui.QDialogButtonBox.Cancel)
@@ -94,8 +113,11 @@ class SliceformTaskPanel:
         return True
 
     def reject(self):
+        # Back to the document before the panel: properties, results and children. The
+        # design of that state is still in memory, so the recompute is quick.
         self.doc.abortTransaction()
-        self.doc.recompute()
+        if self.doc.isTouched():
+            self.doc.recompute()
         FreeCADGui.ActiveDocument.resetEdit()
         return True
 

@@ -1,13 +1,30 @@
 # SPDX-License-Identifier: LGPL-2.1-or-later
-"""View provider of the Sliceform feature: its icon, its children in the tree (patch
-sketches, sheet geometry, TechDraw pages; not the source, which stays beside it), and
-double-click to edit in the task panel."""
+"""View providers of the Sliceform feature and its children. The feature shows, under it in
+the tree, the objects that link to it (its pages and patches; a patch shows its drawing on
+the sheet), the way TechDraw shows views under their page. Deleting the feature deletes
+them and shows the source again. Double-click edits in the task panel."""
+import FreeCAD
 import FreeCADGui
 
 from sliceform_gui import icon_path
 
 
-class ViewProviderSliceform:
+class _Stateless:
+    # Nothing to save: 0.20 calls __getstate__, later versions dumps.
+    def __getstate__(self):
+        return None
+
+    def __setstate__(self, state):
+        return None
+
+    def dumps(self):
+        return None
+
+    def loads(self, state):
+        return None
+
+
+class ViewProviderSliceform(_Stateless):
     def __init__(self, vobj):
         vobj.Proxy = self
         self.Object = vobj.Object
@@ -22,10 +39,22 @@ class ViewProviderSliceform:
         return icon_path("Sliceform_Create.svg")
 
     def claimChildren(self):
+        from sliceform_app import children
+
         obj = self.Object
-        children = [getattr(obj, "PatchGroup", None), getattr(obj, "SheetGroup", None)]
-        children += list(getattr(obj, "Pages", []) or [])
-        return [c for c in children if c is not None]
+        return children.pages_of(obj) + children.patches_of(obj)
+
+    def onDelete(self, vobj, subelements):
+        """Deletes the children with the feature (in the same Delete step) and shows the
+        source again."""
+        from sliceform_app import children
+
+        obj = vobj.Object
+        source = obj.Source
+        children.remove_children(obj)
+        if source is not None and source.ViewObject is not None:
+            source.ViewObject.Visibility = True
+        return True
 
     def setEdit(self, vobj, mode=0):
         if mode != 0:
@@ -43,15 +72,34 @@ class ViewProviderSliceform:
         FreeCADGui.ActiveDocument.setEdit(vobj.Object.Name)
         return True
 
-    # Nothing to save: 0.20 calls __getstate__, later versions dumps.
-    def __getstate__(self):
-        return None
 
-    def __setstate__(self, state):
-        return None
+class ViewProviderPatch(_Stateless):
+    def __init__(self, vobj):
+        vobj.Proxy = self
+        self.Object = vobj.Object
+        vobj.ShapeColor = (0.93, 0.88, 0.76)
+        vobj.Lighting = "Two side"
 
-    def dumps(self):
-        return None
+    def attach(self, vobj):
+        self.Object = vobj.Object
 
-    def loads(self, state):
-        return None
+    def getIcon(self):
+        return icon_path("Sliceform_Slices.svg")
+
+    def claimChildren(self):
+        from sliceform_app import children
+
+        sheet_patch = children.sheet_patch_of(self.Object)
+        return [sheet_patch] if sheet_patch is not None else []
+
+
+class ViewProviderSheetPatch(_Stateless):
+    def __init__(self, vobj):
+        vobj.Proxy = self
+        self.Object = vobj.Object
+
+    def attach(self, vobj):
+        self.Object = vobj.Object
+
+    def getIcon(self):
+        return icon_path("Sliceform_Export.svg")

@@ -171,12 +171,11 @@ class TestSlicingInFreeCAD(unittest.TestCase):
 
 # The feature's tests live in their own file; importing the class runs them here too.
 from TestSliceformFeature import TestSliceformFeature  # noqa: E402,F401
+from TestSliceformChildren import TestSliceformChildren  # noqa: E402,F401
 
 
 class TestDirectionsInTheBinding(unittest.TestCase):
     def test_auto_directions_stand_a_lamp_up(self):
-        import json
-
         from sliceform_app import native
 
         # A round foot, a stem and a ball, lying on its side (foot towards -Y).
@@ -185,9 +184,12 @@ class TestDirectionsInTheBinding(unittest.TestCase):
         lamp.rotate(FreeCAD.Vector(0, 0, 0), FreeCAD.Vector(1, 0, 0), -90)
         d = native().design({"brep": lamp.exportBrepToString(), "name": "lamp"},
                             {"directions": "auto", "slices": 32})
+        import json
+
         report = json.loads(d.report_json())
         chosen = report["directions"]["frames"][report["directions"]["chosen"]]
-        up = FreeCAD.Vector(*chosen["u"]).cross(FreeCAD.Vector(*chosen["v"]))
+        u, v = FreeCAD.Vector(*chosen["u"]), FreeCAD.Vector(*chosen["v"])
+        up = u.cross(v)
         self.assertGreater(up.y, 0.999, chosen["name"])  # the foot is down: W = +Y here
         self.assertEqual(report["parameters"]["u"], chosen["u"])
         self.assertTrue(report["verdict"]["buildable"], report["verdict"]["problems"])
@@ -197,3 +199,39 @@ class TestDirectionsInTheBinding(unittest.TestCase):
 
         with self.assertRaises(native().Error):
             native().design({"brep": Part.makeBox(50, 40, 30).exportBrepToString()}, {"directions": "sideways"})
+
+    def test_feature_directions_property(self):
+        from sliceform_app import feature
+
+        doc = FreeCAD.newDocument("Directions")
+        try:
+            box = doc.addObject("Part::Box", "Box")
+            box.Length, box.Width, box.Height = 40, 120, 60
+            doc.recompute()
+            given = feature.makeSliceform(box, Slices=24)
+            self.assertEqual(given.Directions, "given")  # from Python and in older documents
+            self.assertEqual(given.ChosenDirections, "given")
+            chosen = feature.makeSliceform(box, Slices=24, Directions="auto")
+            self.assertIn(" up, ", chosen.ChosenDirections)
+            self.assertTrue(chosen.Buildable, chosen.Report)
+        finally:
+            FreeCAD.closeDocument(doc.Name)
+
+
+class TestAssemblySteps(unittest.TestCase):
+    def test_steps_follow_the_assembly_order_and_name_placed_partners(self):
+        import json
+
+        from sliceform_app import assembly_steps, native
+
+        torus = Part.makeTorus(40, 12)
+        report = json.loads(native().design({"brep": torus.exportBrepToString()}, {"slices": 32}).report_json())
+        steps = assembly_steps.steps(report)
+        self.assertEqual([pid for pid, _ in steps], report["assembly_order"])
+        self.assertIn("upright", steps[0][1])
+        placed = set()
+        for pid, text in steps:
+            named = set(t.strip(",.;") for t in text.split(": ", 2)[2].split() if t[:1] in "UV" and t[1:2].isdigit())
+            self.assertTrue(named <= placed, (pid, named - placed))  # only partners already there
+            placed.add(pid)
+        self.assertTrue(any("onto" in text for _, text in steps[1:]))

@@ -1,8 +1,8 @@
 # SPDX-License-Identifier: LGPL-2.1-or-later
 """Headless tests of the Sliceform feature: on a Part torus, a PartDesign body with a
-pocket and a mesh; stable, no interlocks, sketches that solve, TechDraw pages that write
-DXF; editing the source redesigns; a failure leaves the document and the source intact;
-save, close, reopen and recompute. Run through TestSliceform (tests/freecad/run.sh)."""
+pocket and a mesh; stable, no interlocks, a patch feature per patch (a face on its plane),
+TechDraw pages that write DXF; editing the source redesigns; a failure leaves the document
+and the source intact; save, close, reopen and recompute. Run through TestSliceform (tests/freecad/run.sh)."""
 import os
 import re
 import tempfile
@@ -72,26 +72,43 @@ def wait_for_views(page, seconds=60):
 class TestSliceformFeature(unittest.TestCase):
     def setUp(self):
         self.doc = FreeCAD.newDocument("SliceformFeature")
+        self.doc.UndoMode = 1  # as in the GUI
+
+    def edit(self, name, change):
+        """An edit as the property editor makes it: one transaction, recomputed inside."""
+        FreeCAD.setActiveTransaction(name)
+        change()
+        self.doc.recompute()
+        FreeCAD.closeActiveTransaction()
 
     def tearDown(self):
         FreeCAD.closeDocument(self.doc.Name)
 
     def check_design(self, sliceform):
+        from sliceform_app import children
+
         self.assertTrue(sliceform.isValid(), sliceform.getStatusString())
         self.assertTrue(sliceform.Stable, sliceform.Report)
         self.assertEqual(sliceform.Interlocks, 0)
         self.assertGreaterEqual(sliceform.PatchCount, 4)
         self.assertEqual(len(sliceform.Shape.Faces), sliceform.PatchCount)
-        self.assertEqual(len(sliceform.PatchSketches), sliceform.PatchCount)
-        for sketch in sliceform.PatchSketches:
-            self.assertEqual(sketch.solve(), 0, sketch.Label)  # 0: solved, no conflicts or redundancies
-            self.assertTrue(sketch.isValid(), sketch.getStatusString())
-            self.assertTrue(sketch.Shape.Wires and all(w.isClosed() for w in sketch.Shape.Wires), sketch.Label)
-        # The sketch lies on its patch: same area as the patch face in the assembly at 90°.
-        outline = Part.Face(sorted(sketch.Shape.Wires, key=lambda w: -Part.Face(w).Area)[0])
-        self.assertGreater(outline.Area, 0)
-        self.assertEqual(len(sliceform.Pages), sliceform.SheetCount)
-        page = sliceform.Pages[0]
+        patches = children.patches_of(sliceform)
+        self.assertEqual(len(patches), sliceform.PatchCount)
+        for patch in patches:
+            self.assertTrue(patch.isValid(), patch.getStatusString())
+            self.assertNotIn("Touched", patch.State, patch.Label)  # built, nothing left to recompute
+            self.assertTrue(patch.Shape.Wires and all(w.isClosed() for w in patch.Shape.Wires), patch.Label)
+            self.assertEqual(len(patch.Shape.Faces), 1, patch.Label)
+        # The patches are the faces of the assembly at 90° (free-form edges are B-splines
+        # fitted within 0.005 mm, so areas agree to well within 1 %).
+        if sliceform.FoldAngle.Value == 90:
+            areas = sorted(f.Area for f in sliceform.Shape.Faces)
+            for mine, theirs in zip(sorted(p.Shape.Area for p in patches), areas):
+                self.assertAlmostEqual(mine, theirs, delta=0.01 * theirs)
+        pages = children.pages_of(sliceform)
+        self.assertEqual(len(pages), sliceform.SheetCount)
+        self.assertEqual(sum(len(p.Views) for p in pages), sliceform.PatchCount)
+        page = pages[0]
         self.assertEqual(page.TypeId, "TechDraw::DrawPage")
         self.assertTrue(page.Views)
         # Every view shows a hidden part with its patch's cut lines and labels.
@@ -113,20 +130,21 @@ class TestSliceformFeature(unittest.TestCase):
         self.doc.recompute()
         sliceform = feature.makeSliceform(torus, Slices=SLICES)
         self.check_design(sliceform)
+        from sliceform_app import children
+
         # Arcs and splines, not only lines: the torus' sections are free-form curves.
-        kinds = {type(g).__name__ for s in sliceform.PatchSketches for g in s.Geometry}
+        kinds = {type(e.Curve).__name__ for p in children.patches_of(sliceform) for e in p.Shape.Edges}
         self.assertIn("BSplineCurve", kinds)
         volume_before = torus.Shape.Volume
         before = [f.Area for f in sliceform.Shape.Faces]
-        names = [s.Name for s in sliceform.PatchSketches]
-        torus.Radius2 = 10
-        self.doc.recompute()
+        names = [p.Name for p in children.patches_of(sliceform)]
+        self.edit("Edit Radius2", lambda: setattr(torus, "Radius2", 10))
         self.check_design(sliceform)
         self.assertNotEqual(before, [f.Area for f in sliceform.Shape.Faces])
         self.assertLess(sum(f.Area for f in sliceform.Shape.Faces), sum(before))
-        # Sketches are regenerated in place: the first ones keep their names.
-        common = min(len(names), len(sliceform.PatchSketches))
-        self.assertEqual(names[:common], [s.Name for s in sliceform.PatchSketches][:common])
+        # Patches are rebuilt in place: the first ones keep their names.
+        common = min(len(names), len(children.patches_of(sliceform)))
+        self.assertEqual(names[:common], [p.Name for p in children.patches_of(sliceform)][:common])
         self.assertNotEqual(torus.Shape.Volume, volume_before)
 
     def test_fold_angle_poses_the_patches(self):
@@ -160,8 +178,7 @@ class TestSliceformFeature(unittest.TestCase):
         self.assertTrue(across)
         self.assertLess(min(p["area_mm2"] for p in across), 0.85 * 50 * 40)
         height_before = sliceform.Shape.BoundBox.ZLength
-        pad.Length = 60
-        self.doc.recompute()
+        self.edit("Edit Length", lambda: setattr(pad, "Length", 60))
         self.check_design(sliceform)
         self.assertAlmostEqual(sliceform.Shape.BoundBox.ZLength, height_before + 20, delta=2)
 
@@ -174,7 +191,8 @@ class TestSliceformFeature(unittest.TestCase):
         self.doc.recompute()
         sliceform = feature.makeSliceform(mesh, Slices=SLICES)
         self.check_design(sliceform)
-        # Read in global placement.
+        # Read in global placement, scaled to the default size about its own centre.
+        self.assertAlmostEqual(sliceform.Size.Value, 150)
         self.assertAlmostEqual(sliceform.Shape.BoundBox.Center.x, 200, delta=5)
 
     def test_failure_is_an_error_state_and_leaves_the_source(self):
@@ -262,10 +280,12 @@ class TestSliceformFeature(unittest.TestCase):
         # Lying along X: the U sections are circles, which the sketches keep as arcs.
         cylinder.Placement.Rotation = FreeCAD.Rotation(FreeCAD.Vector(0, 1, 0), 90)
         self.doc.recompute()
+        from sliceform_app import children
+
         sliceform = feature.makeSliceform(cylinder, Slices=SLICES, Thickness=1.5, SheetSize="A3")
         self.check_design(sliceform)
-        kinds = {type(g).__name__ for s in sliceform.PatchSketches for g in s.Geometry}
-        self.assertTrue(kinds & {"ArcOfCircle", "Circle"}, kinds)
+        kinds = {type(e.Curve).__name__ for p in children.patches_of(sliceform) for e in p.Shape.Edges}
+        self.assertIn("Circle", kinds)
         patches, report = sliceform.PatchCount, sliceform.Report
         path = os.path.join(tempfile.mkdtemp(), "sliceform.FCStd")
         self.doc.saveAs(path)
@@ -304,7 +324,7 @@ class TestSliceformFeature(unittest.TestCase):
         self.doc.recompute()
         sliceform = feature.makeSliceform(sphere, Slices=16)
         folder = tempfile.mkdtemp()
-        written = sliceform.Proxy.write_files(folder)["written"]
+        written = sliceform.Proxy.write_files(sliceform, folder)["written"]
         for name in ("report.json", "sheets.pdf", "sheet-1.svg", "sheet-1.dxf", "assembly.step"):
             self.assertIn(name, written)
             self.assertGreater(os.path.getsize(os.path.join(folder, name)), 0)
@@ -349,7 +369,7 @@ class TestSliceformFeature(unittest.TestCase):
         settings = native().occt_settings()
         self.assertGreater(len(settings), 20)
         self.assertIn("write.surfacecurve.mode", settings)
-        written = sliceform.Proxy.write_files(layout)["written"]
+        written = sliceform.Proxy.write_files(sliceform, layout)["written"]
         # Every OCCT setting as it was, whichever FreeCAD sets some of them itself.
         self.assertEqual(native().occt_settings(), settings)
         self.assertIn("assembly.step", written)

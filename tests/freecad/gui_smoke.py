@@ -1,7 +1,7 @@
 # SPDX-License-Identifier: LGPL-2.1-or-later
 # GUI smoke test, run by gui_smoke.sh inside FreeCAD under Xvfb: the workbench is listed
 # and activates with its commands and preferences page; Create makes a sliceform of a
-# selected solid (stable, with sketches and a TechDraw page), Edit opens the task panel,
+# selected solid (stable, with its patches and a TechDraw page under it in the tree), Edit opens the task panel,
 # Undo takes the sliceform back; the 3D view and the whole window are saved as PNGs.
 # Writes "ok" or the failure to $SLICEFORM_SMOKE_RESULT, then leaves FreeCAD at once.
 import os
@@ -18,7 +18,8 @@ try:
     assert "SliceformWorkbench" in FreeCADGui.listWorkbenches(), "workbench not listed"
     FreeCADGui.activateWorkbench("SliceformWorkbench")
     assert FreeCADGui.activeWorkbench().name() == "SliceformWorkbench", "workbench not active"
-    for name in ("Sliceform_Create", "Sliceform_Edit", "Sliceform_Export", "Sliceform_Fold", "Sliceform_Report"):
+    for name in ("Sliceform_Create", "Sliceform_Edit", "Sliceform_Export", "Sliceform_Fold", "Sliceform_Report",
+                 "Sliceform_AssemblySteps"):
         assert name in FreeCADGui.listCommands(), name + " not registered"
     # Small designs keep the test quick: the preferences page's default for new sliceforms.
     FreeCAD.ParamGet("User parameter:BaseApp/Preferences/Mod/Sliceform").SetInt("Slices", 32)
@@ -33,13 +34,26 @@ try:
     FreeCADGui.Selection.clearSelection()
     FreeCADGui.Selection.addSelection(torus)
     FreeCADGui.runCommand("Sliceform_Create")
-    made = [o for o in doc.Objects if o.Name.startswith("Sliceform") and o.TypeId == "Part::FeaturePython"]
+    from sliceform_app import children
+
+    made = [o for o in doc.Objects if children.is_sliceform(o)]
     assert len(made) == 1, "Create added {} sliceforms".format(len(made))
     sliceform = made[0]
     assert sliceform.isValid(), sliceform.getStatusString()
     assert sliceform.Stable and sliceform.Interlocks == 0, sliceform.Report
     assert sliceform.Slices == 32, "the preference was not used"
-    assert len(sliceform.PatchSketches) == sliceform.PatchCount and sliceform.Pages, "children missing"
+    # Create goes through the Python console, so a recorded macro repeats it.
+    console = [w for w in FreeCADGui.getMainWindow().findChildren(QtGui.QPlainTextEdit)
+               if w.objectName() == "Python console"]
+    assert console and "sliceform_app.feature.makeSliceform(" in console[0].toPlainText(), \
+        "Create did not go through the console"
+    # A feature made with Create chooses its directions, and says which it chose.
+    assert sliceform.Directions == "auto", sliceform.Directions
+    assert " up, " in sliceform.ChosenDirections and "frames" in sliceform.ChosenDirections, sliceform.ChosenDirections
+    assert len(children.patches_of(sliceform)) == sliceform.PatchCount, "patches missing"
+    assert children.pages_of(sliceform), "pages missing"
+    claimed = sliceform.ViewObject.Proxy.claimChildren()
+    assert set(children.pages_of(sliceform) + children.patches_of(sliceform)) == set(claimed), "tree children"
     assert not torus.ViewObject.Visibility, "the source was not hidden"
 
     FreeCADGui.Selection.clearSelection()
@@ -49,6 +63,72 @@ try:
     assert dialog, "the task panel did not open"
     FreeCADGui.Control.closeDialog()
     FreeCADGui.ActiveDocument.resetEdit()
+
+    # Assembly steps: a display mode. Step 3 shows the first three patches in assembly order,
+    # the third in orange; closing puts every visibility and colour back; no Undo step.
+    from sliceform_gui import assembly_steps
+
+    FreeCADGui.Selection.clearSelection()
+    FreeCADGui.Selection.addSelection(sliceform)
+    undo_before = list(doc.UndoNames)
+    patches = {p.PatchId: p for p in children.patches_of(sliceform)}
+    before = {p.Name: (p.ViewObject.Visibility, tuple(p.ViewObject.ShapeColor)) for p in patches.values()}
+    FreeCADGui.runCommand("Sliceform_AssemblySteps")
+    panel = assembly_steps.current
+    assert panel is not None and FreeCADGui.Control.activeDialog(), "the assembly steps did not open"
+    panel.next.click()
+    panel.next.click()
+    order = [pid for pid, _ in panel.steps]
+    assert len(order) == sliceform.PatchCount, (len(order), sliceform.PatchCount)
+    shown = [pid for pid, p in patches.items() if p.ViewObject.Visibility]
+    assert sorted(shown) == sorted(order[:3]), (shown, order[:3])
+    colour = tuple(patches[order[2]].ViewObject.ShapeColor)[:3]
+    assert all(abs(a - b) < 1e-3 for a, b in zip(colour, assembly_steps.HIGHLIGHT)), ("no highlight", colour)
+    assert "Step 3 of" in panel.label.text() and order[2] in panel.label.text(), panel.label.text()
+    assert not sliceform.ViewObject.Visibility, "the assembled sliceform hides the steps"
+    panel.reject()
+    after = {p.Name: (p.ViewObject.Visibility, tuple(p.ViewObject.ShapeColor)) for p in patches.values()}
+    assert after == before, "the steps changed the display for good"
+    assert sliceform.ViewObject.Visibility, "the sliceform was not shown again"
+    assert list(doc.UndoNames) == undo_before, doc.UndoNames
+
+    # Fold animation: it ends by itself with the angle put back; the command again stops it.
+    # (How long it takes is measured, not asserted: bench/ measures speed.)
+    import time
+
+    from sliceform_gui import commands as sliceform_commands
+
+    FreeCADGui.Selection.clearSelection()
+    FreeCADGui.Selection.addSelection(sliceform)
+    angle = float(sliceform.FoldAngle.Value)
+    FreeCADGui.runCommand("Sliceform_Fold")
+    animation = [c for c in sliceform_commands.COMMANDS_MADE if isinstance(c, sliceform_commands.FoldCommand)][0]
+    began, seen = time.monotonic(), set()
+    while animation.running() and time.monotonic() - began < 20:
+        seen.add(round(float(sliceform.FoldAngle.Value)))
+        QtGui.QApplication.processEvents()
+    # Written beside the screenshot, for the closing note (not asserted).
+    with open(png.replace(".png", "_measured.txt"), "w") as f:
+        f.write("fold animation: {:.2f} s, {} angles seen, {} patches\n".format(
+            time.monotonic() - began, len(seen), sliceform.PatchCount))
+
+    assert not animation.running(), "the fold animation did not end"
+    assert abs(float(sliceform.FoldAngle.Value) - angle) < 1e-9, "the angle was not put back"
+    assert min(seen) < 60, ("it did not fold", sorted(seen))
+    FreeCADGui.runCommand("Sliceform_Fold")
+    for _ in range(3):
+        QtGui.QApplication.processEvents()
+    assert animation.running()
+    FreeCADGui.runCommand("Sliceform_Fold")  # again: stops it
+    assert not animation.running(), "the command again did not stop it"
+    assert abs(float(sliceform.FoldAngle.Value) - angle) < 1e-9, "the angle was not put back after a stop"
+
+
+    # The preferences page finds its icon by name (FreeCAD looks up "preferences-<page>").
+    # (A name it cannot find gives its "missing" picture, not a null icon: compare with it.)
+    found = FreeCADGui.getIcon("preferences-sliceform").pixmap(32, 32).toImage()
+    missing = FreeCADGui.getIcon("preferences-no-such-page").pixmap(32, 32).toImage()
+    assert not found.isNull() and found != missing, "no preferences icon"
 
     # The 3D view: the sliceform beside its source.
     FreeCADGui.Selection.clearSelection()
@@ -60,7 +140,7 @@ try:
     # The whole window with the first sheet's TechDraw page beside the 3D view. Under Xvfb
     # a widget grab leaves OpenGL views blank, so the 3D view's own rendering is painted
     # into its place.
-    page = sliceform.Pages[0]
+    page = children.pages_of(sliceform)[0]
     page.ViewObject.show()
     FreeCADGui.updateGui()
     main = FreeCADGui.getMainWindow()

@@ -42,8 +42,8 @@ def main():
     check(sliceform.PatchCount >= 4, "patches: {}".format(sliceform.PatchCount))
     check(len(sliceform.Shape.Faces) == sliceform.PatchCount, "faces")
     folder = tempfile.mkdtemp()
-    written = sliceform.Proxy.write_files(folder)["written"]
-    for name in ("report.json", "sheets.pdf", "sheet-1.dxf", "sheet-1.svg", "assembly.step"):
+    written = sliceform.Proxy.write_files(sliceform, folder)["written"]
+    for name in ("report.json", "sheets.pdf", "sheet-1.dxf", "sheet-1.svg", "assembly.step", "instructions.pdf"):
         check(name in written and os.path.getsize(os.path.join(folder, name)) > 0, name)
     with open(os.path.join(folder, "report.json")) as f:
         report = json.load(f)

@@ -1,0 +1,87 @@
+# SPDX-License-Identifier: LGPL-2.1-or-later
+"""Assembly steps: a display mode over a sliceform's patches. It shows the patches of the
+first steps only, the newest in orange, and says which partners its slots go onto; Next and
+Previous move through the assembly order. It changes nothing in the document: only the
+patches' visibility and colour, put back when the panel closes."""
+import json
+
+import FreeCAD
+import FreeCADGui
+
+from sliceform_app import assembly_steps, children
+
+translate = FreeCAD.Qt.translate
+
+HIGHLIGHT = (0.91, 0.38, 0.24)  # the booklet's orange (#E8603C)
+
+current = None  # the open panel, for the GUI test
+
+
+class AssemblyStepsPanel:
+    def __init__(self, sliceform):
+        from PySide import QtGui
+
+        global current
+        self.obj = sliceform
+        report = json.loads(sliceform.Proxy.report_json(sliceform))
+        self.steps = assembly_steps.steps(report)
+        self.patches = {p.PatchId: p for p in children.patches_of(sliceform)}
+        shown = [sliceform] + list(self.patches.values())
+        self.saved = {o.Name: (o.ViewObject.Visibility, getattr(o.ViewObject, "ShapeColor", None)) for o in shown}
+        self.colour = {p.PatchId: p.ViewObject.ShapeColor for p in self.patches.values()}
+        self.form = QtGui.QWidget()
+        self.form.setWindowTitle(translate("Sliceform", "Assembly steps"))
+        layout = QtGui.QVBoxLayout(self.form)
+        self.label = QtGui.QLabel()
+        self.label.setWordWrap(True)
+        layout.addWidget(self.label)
+        row = QtGui.QHBoxLayout()
+        self.previous = QtGui.QPushButton(translate("Sliceform", "Previous"))
+        self.next = QtGui.QPushButton(translate("Sliceform", "Next"))
+        row.addWidget(self.previous)
+        row.addWidget(self.next)
+        layout.addLayout(row)
+        self.previous.clicked.connect(lambda: self.go(self.step - 1))
+        self.next.clicked.connect(lambda: self.go(self.step + 1))
+        self.step = 0
+        sliceform.ViewObject.Visibility = False
+        self.go(1)
+        current = self
+
+    def go(self, step):
+        """Shows the patches of steps 1..step, the last one highlighted."""
+        self.step = max(1, min(step, len(self.steps)))
+        for k, (pid, _text) in enumerate(self.steps):
+            patch = self.patches.get(pid)
+            if patch is None:
+                continue
+            patch.ViewObject.Visibility = k < self.step
+            patch.ViewObject.ShapeColor = HIGHLIGHT if k == self.step - 1 else self.colour[pid]
+        self.label.setText(self.steps[self.step - 1][1] if self.steps else "")
+        self.previous.setEnabled(self.step > 1)
+        self.next.setEnabled(self.step < len(self.steps))
+        FreeCADGui.updateGui()
+
+    def restore(self):
+        global current
+        for name, (visible, colour) in self.saved.items():
+            o = self.obj.Document.getObject(name)
+            if o is None:
+                continue
+            o.ViewObject.Visibility = visible
+            if colour is not None:
+                o.ViewObject.ShapeColor = colour
+        current = None
+
+    def getStandardButtons(self):
+        from PySide import QtGui
+
+        return int(QtGui.QDialogButtonBox.Close)
+
+    def reject(self):
+        self.restore()
+        FreeCADGui.Control.closeDialog()
+        return True
+
+    def accept(self):
+        return self.reject()

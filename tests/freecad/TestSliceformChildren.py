@@ -1,0 +1,360 @@
+# SPDX-License-Identifier: LGPL-2.1-or-later
+"""Headless tests of the Sliceform's children as FreeCAD sees them (issue 16): they link to
+the feature, whose only input is its Source; a source edit that changes the patch count
+changes the children inside that edit's Undo step; a trial recompute that is aborted (the
+task panel's Cancel) leaves exactly the document before it; the design is made again on
+demand after a reopen; messages name properties; a mesh is designed at Size 150 where it
+stands; view labels are the patch ids; an older document's child links are migrated.
+Run through TestSliceform (tests/freecad/run.sh)."""
+import json
+import os
+import tempfile
+import unittest
+
+import FreeCAD
+import Mesh
+
+SLICES = 24
+
+
+def snapshot(doc, sliceform):
+    """What a user sees of the document: objects, labels, pages and views, results, states
+    and the Undo stack."""
+    from sliceform_app import children
+
+    return {
+        "objects": sorted((o.Name, o.Label, o.TypeId) for o in doc.Objects),
+        "views": [sorted(v.Label for v in p.Views) for p in children.pages_of(sliceform)],
+        "patches": [(p.Name, p.PatchId, round(p.Shape.Area, 6)) for p in children.patches_of(sliceform)],
+        "results": (sliceform.PatchCount, sliceform.SheetCount, sliceform.Report),
+        "touched": sorted(o.Name for o in doc.Objects if "Touched" in o.State or "Invalid" in o.State),
+        "undo": doc.UndoNames,
+    }
+
+
+class TestSliceformChildren(unittest.TestCase):
+    def setUp(self):
+        self.doc = FreeCAD.newDocument("SliceformChildren")
+        self.doc.UndoMode = 1  # as in the GUI
+
+    def tearDown(self):
+        FreeCAD.closeDocument(self.doc.Name)
+
+    def box_with_hole(self, height=60):
+        """A box with a hole 80 high from z = -20: 20 patches on 2 A4 sheets at Height 60
+        (24 slices), 6 at Height 100, where the hole stops inside; 22 at 48 slices."""
+        box = self.doc.addObject("Part::Box", "Box")
+        box.Length, box.Width, box.Height = 80, 60, height
+        cylinder = self.doc.addObject("Part::Cylinder", "Hole")
+        cylinder.Radius, cylinder.Height = 15, 100
+        cylinder.Placement.Base = FreeCAD.Vector(40, 30, -20)
+        cut = self.doc.addObject("Part::Cut", "Cut")
+        cut.Base, cut.Tool = box, cylinder
+        self.doc.recompute()
+        return box, cut
+
+    def create(self, source, **properties):
+        from sliceform_app import feature
+
+        self.doc.openTransaction("Create sliceform")
+        sliceform = feature.makeSliceform(source, **dict({"Slices": SLICES}, **properties))
+        self.doc.commitTransaction()
+        return sliceform
+
+    def check_children(self, sliceform):
+        from sliceform_app import children
+
+        patches = children.patches_of(sliceform)
+        pages = children.pages_of(sliceform)
+        self.assertEqual(len(patches), sliceform.PatchCount)
+        self.assertEqual(len(pages), sliceform.SheetCount)
+        self.assertEqual(sum(len(p.Views) for p in pages), sliceform.PatchCount)
+        report = json.loads(sliceform.Proxy.report_json(sliceform))
+        self.assertEqual([p.PatchId for p in patches], [f["id"] for f in sliceform.Proxy.flat_patches(sliceform)])
+        self.assertEqual(sorted(p.PatchId for p in patches), sorted(p["id"] for p in report["patches"]))
+        left = [o.Name for o in self.doc.Objects if "Touched" in o.State or "Invalid" in o.State]
+        self.assertEqual(left, [])
+
+    def test_outlist_is_only_the_source_and_children_link_to_it(self):
+        from sliceform_app import children
+
+        _box, cut = self.box_with_hole()
+        sliceform = self.create(cut)
+        self.check_children(sliceform)
+        self.assertEqual(sliceform.OutList, [cut])
+        for patch in children.patches_of(sliceform):
+            self.assertEqual(patch.Sliceform, sliceform)
+            self.assertIn(sliceform, patch.OutList)
+        for page in children.pages_of(sliceform):
+            self.assertEqual(page.Sliceform, sliceform)
+        # Every child but the templates (which the pages use) depends on the feature.
+        made = set(o.Name for o in children.owned_objects(sliceform) if o.TypeId != "TechDraw::DrawSVGTemplate")
+        self.assertTrue(made <= set(o.Name for o in sliceform.InListRecursive))
+
+    def test_no_purge_touched_in_the_addon(self):
+        import sliceform_app
+        import sliceform_gui
+
+        for package in (sliceform_app, sliceform_gui):
+            folder = os.path.dirname(package.__file__)
+            for name in os.listdir(folder):
+                if name.endswith(".py"):
+                    with open(os.path.join(folder, name)) as f:
+                        self.assertNotIn("purgeTouched", f.read(), name)
+
+    def test_source_edit_that_lowers_the_count_adds_no_undo_step(self):
+        box, cut = self.box_with_hole(60)
+        sliceform = self.create(cut)
+        before = snapshot(self.doc, sliceform)
+        self.assertEqual(sliceform.PatchCount, 20)
+        # As the property editor does it: an active transaction, the recompute inside it.
+        FreeCAD.setActiveTransaction("Edit Box Height")
+        box.Height = 100
+        self.doc.recompute()
+        FreeCAD.closeActiveTransaction()
+        self.assertEqual(sliceform.PatchCount, 6)
+        self.check_children(sliceform)
+        self.assertEqual(self.doc.UndoNames, ["Edit Box Height", "Create sliceform"])
+        # One Undo gives back the 20 patches, their pages and views, as they were.
+        self.doc.undo()
+        self.doc.recompute()
+        self.assertEqual(sliceform.PatchCount, 20)
+        self.check_children(sliceform)
+        after = snapshot(self.doc, sliceform)
+        self.assertEqual(after["undo"], ["Create sliceform"])
+        for key in ("objects", "views", "patches", "results"):
+            self.assertEqual(after[key], before[key], key)
+        # And Redo the 6.
+        self.doc.redo()
+        self.doc.recompute()
+        self.assertEqual(sliceform.PatchCount, 6)
+        self.check_children(sliceform)
+
+    def test_aborted_trial_recompute_restores_the_document(self):
+        """The task panel's Cancel: its transaction aborted after a Recompute that changed
+        the patch and sheet counts."""
+        from sliceform_app import children
+
+        _box, cut = self.box_with_hole(60)
+        sliceform = self.create(cut)
+        before = snapshot(self.doc, sliceform)
+        self.doc.openTransaction("Edit sliceform")
+        sliceform.Slices = 48
+        sliceform.SheetSize = "A3"
+        with children.held():
+            self.doc.recompute()
+            children.sync(sliceform)
+        trial = snapshot(self.doc, sliceform)
+        self.assertNotEqual(trial["results"], before["results"])
+        self.assertNotEqual(len(trial["patches"]), len(before["patches"]))
+        self.assertNotEqual(len(trial["views"]), len(before["views"]))
+        self.doc.abortTransaction()
+        if self.doc.isTouched():
+            self.doc.recompute()
+        self.assertEqual(snapshot(self.doc, sliceform), before)
+        self.check_children(sliceform)
+
+    def test_export_and_report_right_after_reopen(self):
+        from sliceform_app import children
+
+        _box, cut = self.box_with_hole(60)
+        sliceform = self.create(cut)
+        patches = sliceform.PatchCount
+        path = os.path.join(tempfile.mkdtemp(), "reopen.FCStd")
+        self.doc.saveAs(path)
+        FreeCAD.closeDocument(self.doc.Name)
+        self.doc = FreeCAD.openDocument(path)
+        sliceform = self.doc.getObject("Sliceform")
+        touched = [o.Name for o in self.doc.Objects if "Touched" in o.State]
+        self.assertEqual(touched, [])
+        self.assertEqual(len(children.patches_of(sliceform)), patches)
+        self.assertIsNone(sliceform.Proxy.design)  # nothing of the design is saved
+        folder = tempfile.mkdtemp()
+        written = sliceform.Proxy.write_files(sliceform, folder)["written"]
+        self.assertIn("sheet-1.dxf", written)
+        report = json.loads(sliceform.Proxy.report_json(sliceform))
+        self.assertEqual(len(report["patches"]), patches)
+        # Designing on demand changed nothing in the document.
+        self.assertEqual([o.Name for o in self.doc.Objects if "Touched" in o.State], [])
+        self.assertEqual(self.doc.UndoNames, [])
+
+    def test_messages_name_properties(self):
+        from sliceform_app import feature
+
+        sphere = self.doc.addObject("Part::Sphere", "Sphere")
+        sphere.Radius = 40
+        self.doc.recompute()
+        sliceform = feature.makeSliceform(sphere, Slices=16, SheetSize="Custom", SheetWidth=40, SheetHeight=40)
+        self.assertFalse(sliceform.isValid())
+        message = sliceform.getStatusString()
+        self.assertIn("larger SheetSize or a smaller Size", message)
+        self.assertNotIn("--", message)
+
+    def test_a_failure_is_reported_once_without_a_traceback(self):
+        """What the report view shows for a design that fails: its message once, no Python
+        stack; and tracebacks are as long as before afterwards."""
+        import shutil
+        import subprocess
+        import sys
+
+        script = os.path.join(tempfile.mkdtemp(), "fail.py")
+        with open(script, "w") as f:
+            f.write(
+                "import sys, FreeCAD\n"
+                "from sliceform_app import feature\n"
+                "doc = FreeCAD.newDocument('F')\n"
+                "s = doc.addObject('Part::Sphere', 'S')\n"
+                "s.Radius = 40\n"
+                "doc.recompute()\n"
+                "o = feature.makeSliceform(s, Slices=16, SheetSize='Custom', SheetWidth=40, SheetHeight=40)\n"
+                "FreeCAD.Console.PrintMessage('LIMIT %s\\n' % hasattr(sys, 'tracebacklimit'))\n"
+            )
+        run = subprocess.run([shutil.which("freecadcmd"), script], capture_output=True, text=True, timeout=300)
+        out = run.stdout + run.stderr
+        self.assertEqual(out.count("does not fit a 40x40 sheet"), 1, out[-2000:])
+        self.assertIn("choose a larger SheetSize or a smaller Size", out)
+        self.assertNotIn("Traceback", out)
+        self.assertNotIn('File "', out)
+        self.assertIn("LIMIT False", out)
+        self.assertFalse(hasattr(sys, "tracebacklimit"))
+
+    def test_unbuildable_design_is_an_error_state_naming_properties(self):
+        """A design made but not buildable (the CLI's exit 1): the feature is in error with
+        the verdict, the results and the shape show what was made."""
+        from sliceform_app import feature
+
+        box = self.doc.addObject("Part::Box", "Box")
+        box.Length, box.Width, box.Height = 80, 60, 60
+        self.doc.recompute()
+        sliceform = feature.makeSliceform(box, Slices=SLICES, TimeLimit=0.001)
+        self.assertFalse(sliceform.isValid())
+        message = sliceform.getStatusString()
+        self.assertIn("cannot be built", message)
+        self.assertIn("larger TimeLimit, or fewer Slices", message)
+        self.assertNotIn("--", message)
+        self.assertFalse(sliceform.Buildable)
+        self.assertGreater(sliceform.PatchCount, 0)
+        self.assertNotIn("--", sliceform.Report)
+        sliceform.TimeLimit = 60
+        self.doc.recompute()
+        self.assertTrue(sliceform.isValid(), sliceform.getStatusString())
+
+    def test_mesh_at_native_size_designs_at_size_150_in_place(self):
+        mesh = self.doc.addObject("Mesh::Feature", "Small")
+        mesh.Mesh = Mesh.createSphere(5, 48)  # 10 units across: a mesh file carries no unit
+        mesh.Placement.Base = FreeCAD.Vector(200, -30, 12)
+        self.doc.recompute()
+        sliceform = self.create(mesh)
+        self.assertTrue(sliceform.isValid(), sliceform.getStatusString())
+        self.assertAlmostEqual(sliceform.Size.Value, 150)
+        box = sliceform.Shape.BoundBox
+        self.assertAlmostEqual(max(box.XLength, box.YLength, box.ZLength), 150, delta=3)
+        centre = mesh.Mesh.BoundBox.Center
+        self.assertLess((box.Center - centre).Length, 3)  # scaled about its own centre
+        self.check_children(sliceform)
+
+    def test_solid_keeps_its_true_size(self):
+        sphere = self.doc.addObject("Part::Sphere", "Sphere")
+        sphere.Radius = 30
+        sphere.Placement.Base = FreeCAD.Vector(0, 0, 100)
+        self.doc.recompute()
+        sliceform = self.create(sphere, Slices=16)
+        self.assertEqual(sliceform.Size.Value, 0)
+        box = sliceform.Shape.BoundBox
+        self.assertAlmostEqual(box.ZLength, 60, delta=3)
+        self.assertAlmostEqual(box.Center.z, 100, delta=3)
+        sliceform.Size = 120  # scaled about its own centre too
+        self.doc.recompute()
+        box = sliceform.Shape.BoundBox
+        self.assertAlmostEqual(box.ZLength, 120, delta=5)
+        self.assertAlmostEqual(box.Center.z, 100, delta=3)
+
+    def test_view_labels_are_the_patch_ids(self):
+        from sliceform_app import children
+
+        _box, cut = self.box_with_hole(60)
+        sliceform = self.create(cut)
+        placed = {p["id"]: s for s, sheet in enumerate(sliceform.Proxy.sheets(sliceform)["sheets"]) for p in sheet}
+        seen = []
+        for page in children.pages_of(sliceform):
+            for view in page.Views:
+                patch = view.Source[0].Patch
+                self.assertEqual(view.Label, patch.PatchId)
+                self.assertEqual(placed[patch.PatchId], page.SheetIndex)
+                seen.append(view.Label)
+        self.assertEqual(sorted(seen), sorted(placed))
+
+    def test_a_new_sheet_size_moves_the_views_and_the_template(self):
+        """Same patches on the same number of sheets, another sheet size: the pages get a
+        template of the new size and the views stay at 1:1 on it."""
+        from sliceform_app import children
+
+        sphere = self.doc.addObject("Part::Sphere", "Sphere")
+        sphere.Radius = 30
+        self.doc.recompute()
+        sliceform = self.create(sphere, Slices=16, SheetSize="Custom", SheetWidth=600, SheetHeight=400)
+        ids = [p.PatchId for p in children.patches_of(sliceform)]
+        FreeCAD.setActiveTransaction("Edit SheetHeight")
+        sliceform.SheetHeight = 500
+        self.doc.recompute()
+        FreeCAD.closeActiveTransaction()
+        self.assertEqual([p.PatchId for p in children.patches_of(sliceform)], ids)
+        self.check_children(sliceform)
+        for page in children.pages_of(sliceform):
+            self.assertEqual(page.Sheet, "600 x 500 mm, margin 10 mm")
+            with open(page.Template.Template) as f:
+                self.assertIn('height="500mm"', f.read())
+            for view in page.Views:
+                self.assertAlmostEqual(view.Y.Value, 250)
+        for patch in children.patches_of(sliceform):
+            sheet_patch = children.sheet_patch_of(patch)
+            self.assertAlmostEqual(sheet_patch.Shape.BoundBox.YMax, 500)  # the corner vertex
+
+    def test_older_document_with_child_links_opens_and_migrates(self):
+        """A document saved when the feature linked its children (PatchGroup, PatchSketches,
+        Pages, SheetGroup): it opens, the links go, the next recompute makes the new
+        children and removes the old ones."""
+        from sliceform_app import children, feature
+
+        _box, cut = self.box_with_hole(60)
+        obj = self.doc.addObject("Part::FeaturePython", "Sliceform")
+        feature.Sliceform(obj)
+        obj.Source = cut
+        obj.Slices = SLICES
+        group = self.doc.addObject("App::DocumentObjectGroup", "Sliceform_Patches")
+        sketch = self.doc.addObject("Sketcher::SketchObject", "Sliceform_Patch000")
+        group.addObject(sketch)
+        page = self.doc.addObject("TechDraw::DrawPage", "Sliceform_Sheet01")
+        page.Template = self.doc.addObject("TechDraw::DrawSVGTemplate", "Sliceform_Template01")
+        for kind, name, value in (
+            ("App::PropertyLink", "PatchGroup", group),
+            ("App::PropertyLinkList", "PatchSketches", [sketch]),
+            ("App::PropertyLinkList", "Pages", [page]),
+        ):
+            obj.addProperty(kind, name, "Children", "")
+            setattr(obj, name, value)
+        with children.held():
+            self.doc.recompute()
+        path = os.path.join(tempfile.mkdtemp(), "old.FCStd")
+        self.doc.saveAs(path)
+        FreeCAD.closeDocument(self.doc.Name)
+        self.doc = FreeCAD.openDocument(path)
+        self.doc.UndoMode = 1
+        sliceform = self.doc.getObject("Sliceform")
+        for name in ("PatchGroup", "PatchSketches", "Pages", "SheetGroup"):
+            self.assertNotIn(name, sliceform.PropertiesList)
+        feature.initProperties(sliceform)  # idempotent
+        self.assertEqual(sliceform.OutList, [self.doc.getObject("Cut")])
+        self.doc.openTransaction("Recompute")
+        sliceform.touch()
+        self.doc.recompute()
+        self.doc.commitTransaction()
+        for name in ("Sliceform_Patches", "Sliceform_Patch000"):
+            self.assertIsNone(self.doc.getObject(name), name)
+        self.assertFalse([o for o in self.doc.Objects if o.TypeId.startswith(("Sketcher", "App::DocumentObjectGroup"))])
+        self.assertEqual(len([o for o in self.doc.Objects if o.TypeId == "TechDraw::DrawPage"]), sliceform.SheetCount)
+        self.check_children(sliceform)
+
+
+if __name__ == "__main__":
+    unittest.main()

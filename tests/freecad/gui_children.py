@@ -1,0 +1,287 @@
+# SPDX-License-Identifier: LGPL-2.1-or-later
+# GUI test of the Sliceform's children (issue 16), run by gui_smoke.sh inside FreeCAD under
+# Xvfb, through the real commands and dialogs: Create; the task panel's Recompute with a
+# new patch and sheet count, then Cancel, restores the document and the Undo stack, and
+# with OK is one Undo step that takes it all back; an edit
+# of the source as the property editor makes it, lowering the count, is one Undo step;
+# Delete removes the children and shows the source again, Undo brings all back; after
+# save and reopen no TechDraw page opens by itself, nothing is marked for recompute, the
+# tree shows the children, and the Export command and Show report's "Save report.json..."
+# work at once. Writes "ok" or the failure to $SLICEFORM_CHILDREN_RESULT.
+import os
+import tempfile
+import traceback
+
+import FreeCAD
+import FreeCADGui
+
+result_path = os.environ["SLICEFORM_CHILDREN_RESULT"]
+
+
+def snapshot(doc, sliceform):
+    from sliceform_app import children
+
+    return {
+        "objects": sorted((o.Name, o.Label, o.TypeId) for o in doc.Objects),
+        "views": [sorted(v.Label for v in p.Views) for p in children.pages_of(sliceform)],
+        "patches": [(p.Name, p.PatchId, round(p.Shape.Area, 6)) for p in children.patches_of(sliceform)],
+        "results": (sliceform.PatchCount, sliceform.SheetCount, sliceform.Report),
+        "touched": sorted(o.Name for o in doc.Objects if "Touched" in o.State or "Invalid" in o.State),
+        "undo": doc.UndoNames,
+    }
+
+
+def page_windows():
+    from PySide import QtGui
+
+    mdi = FreeCADGui.getMainWindow().findChild(QtGui.QMdiArea)
+    return [w for w in mdi.subWindowList() if w.widget() is not None and
+            "MDIViewPage" in w.widget().metaObject().className()]
+
+
+def click_away_dialogs(answer):
+    """Presses `answer` on the next modal message box (FreeCAD asks before deleting an object
+    others depend on)."""
+    from PySide import QtCore, QtGui
+
+    def press():
+        box = QtGui.QApplication.activeModalWidget()
+        if isinstance(box, QtGui.QMessageBox):
+            button = box.button(answer)
+            (button or box.buttons()[0]).click()
+        else:
+            QtCore.QTimer.singleShot(50, press)
+
+    QtCore.QTimer.singleShot(50, press)
+
+
+def wait(ms=300):
+    """Lets the GUI run its timers (the tree updates on one)."""
+    from PySide import QtCore
+
+    loop = QtCore.QEventLoop()
+    QtCore.QTimer.singleShot(ms, loop.quit)
+    loop.exec_()
+
+
+def tree_item(tree, label):
+    stack = [tree.topLevelItem(i) for i in range(tree.topLevelItemCount())]
+    while stack:
+        item = stack.pop()
+        if item.text(0) == label:
+            return item
+        stack.extend(item.child(i) for i in range(item.childCount()))
+    raise AssertionError("no tree item " + label)
+
+
+def task_panel_widgets():
+    from PySide import QtGui
+
+    main = FreeCADGui.getMainWindow()
+    forms = [w for w in main.findChildren(QtGui.QWidget) if w.windowTitle() == "Sliceform" and
+             isinstance(w.layout(), QtGui.QFormLayout)]
+    assert forms, "no task panel"
+    form = forms[-1]
+    layout = form.layout()
+    fields = {}
+    for row in range(layout.rowCount()):
+        label = layout.itemAt(row, QtGui.QFormLayout.LabelRole)
+        field = layout.itemAt(row, QtGui.QFormLayout.FieldRole)
+        if label is not None and field is not None:
+            fields[label.widget().text()] = field.widget()
+    recompute = [b for b in form.findChildren(QtGui.QPushButton) if b.text() == "Recompute"][0]
+    boxes = [b for b in main.findChildren(QtGui.QDialogButtonBox) if b.isVisible() and
+             b.button(QtGui.QDialogButtonBox.Cancel) is not None]
+    return fields, recompute, boxes[-1].button(QtGui.QDialogButtonBox.Cancel)
+
+
+try:
+    from PySide import QtCore, QtGui
+
+    from sliceform_app import children
+
+    FreeCADGui.activateWorkbench("SliceformWorkbench")
+    doc = FreeCAD.newDocument("Children")
+    box = doc.addObject("Part::Box", "Box")
+    box.Length, box.Width, box.Height = 80, 60, 60
+    hole = doc.addObject("Part::Cylinder", "Hole")
+    hole.Radius, hole.Height = 15, 100
+    hole.Placement.Base = FreeCAD.Vector(40, 30, -20)
+    cut = doc.addObject("Part::Cut", "Cut")
+    cut.Base, cut.Tool = box, hole
+    doc.recompute()
+    FreeCAD.ParamGet("User parameter:BaseApp/Preferences/Mod/Sliceform").SetInt("Slices", 24)
+    # The counts below are the given frame's (Create's own default is auto: gui_smoke.py).
+    FreeCAD.ParamGet("User parameter:BaseApp/Preferences/Mod/Sliceform").SetString("Directions", "given")
+    FreeCADGui.Selection.clearSelection()
+    FreeCADGui.Selection.addSelection(cut)
+    FreeCADGui.runCommand("Sliceform_Create")
+    FreeCADGui.updateGui()
+    sliceform = doc.getObject("Sliceform")
+    assert sliceform.isValid(), sliceform.getStatusString()
+    assert (sliceform.PatchCount, sliceform.SheetCount) == (20, 2), (sliceform.PatchCount, sliceform.SheetCount)
+    assert sliceform.OutList == [cut], [o.Name for o in sliceform.OutList]
+    assert doc.UndoNames == ["Create sliceform"], doc.UndoNames
+    assert not page_windows(), "a page opened by itself on Create"
+    before = snapshot(doc, sliceform)
+    assert before["touched"] == [], before["touched"]
+    # The tree: pages and patches under the sliceform, each patch's drawing under it.
+    tree = max(FreeCADGui.getMainWindow().findChildren(QtGui.QTreeWidget), key=lambda t: t.topLevelItemCount())
+    wait()
+    tree.expandAll()
+    wait()
+    png = os.environ.get("SLICEFORM_SMOKE_PNG")
+    if png:
+        FreeCADGui.getMainWindow().grab().save(png.replace(".png", "_tree.png"))
+    item = tree_item(tree, sliceform.Label)
+    under = sorted(item.child(i).text(0) for i in range(item.childCount()))
+    expected = sorted([p.Label for p in children.pages_of(sliceform)] + [p.Label for p in children.patches_of(sliceform)])
+    assert under == expected, "under the sliceform in the tree: {}".format(under)
+    patch = children.patches_of(sliceform)[0]
+    item = tree_item(tree, patch.Label)
+    assert [item.child(i).text(0) for i in range(item.childCount())] == [children.sheet_patch_of(patch).Label]
+
+    # 1. Task panel: a Recompute that changes the patch and sheet counts, then Cancel.
+    FreeCADGui.Selection.clearSelection()
+    FreeCADGui.Selection.addSelection(sliceform)
+    FreeCADGui.runCommand("Sliceform_Edit")
+    FreeCADGui.updateGui()
+    fields, recompute, cancel = task_panel_widgets()
+    fields["Slices per direction"].setValue(48)
+    sheet = fields["Sheet"]
+    sheet.setCurrentIndex(sheet.findText("A3"))
+    recompute.click()
+    FreeCADGui.updateGui()
+    trial = snapshot(doc, sliceform)
+    assert trial["results"][:2] == (22, 1), trial["results"][:2]
+    assert len(trial["patches"]) == 22 and len(trial["views"]) == 1, (len(trial["patches"]), trial["views"])
+    cancel.click()
+    FreeCADGui.updateGui()
+    assert not FreeCADGui.Control.activeDialog(), "the panel stayed open"
+    after = snapshot(doc, sliceform)
+    for key in before:
+        assert after[key] == before[key], "Cancel left {} changed: {} -> {}".format(key, before[key], after[key])
+
+    # 1b. The same change kept with OK: one Undo step, which takes it all back.
+    FreeCADGui.Selection.clearSelection()
+    FreeCADGui.Selection.addSelection(sliceform)
+    FreeCADGui.runCommand("Sliceform_Edit")
+    FreeCADGui.updateGui()
+    fields, recompute, _cancel = task_panel_widgets()
+    fields["Slices per direction"].setValue(48)
+    fields["Sheet"].setCurrentIndex(fields["Sheet"].findText("A3"))
+    recompute.click()
+    ok = [b for b in FreeCADGui.getMainWindow().findChildren(QtGui.QDialogButtonBox) if b.isVisible() and
+          b.button(QtGui.QDialogButtonBox.Ok) is not None][-1].button(QtGui.QDialogButtonBox.Ok)
+    ok.click()
+    FreeCADGui.updateGui()
+    kept = snapshot(doc, sliceform)
+    assert kept["results"][:2] == (22, 1) and len(kept["patches"]) == 22, kept["results"][:2]
+    assert kept["touched"] == [], kept["touched"]
+    assert doc.UndoNames == ["Edit sliceform", "Create sliceform"], doc.UndoNames
+    FreeCADGui.runCommand("Std_Undo")
+    doc.recompute()
+    FreeCADGui.updateGui()
+    undone = snapshot(doc, sliceform)
+    for key in ("objects", "views", "patches", "results", "touched"):
+        assert undone[key] == before[key], "Undo of OK: {} {} -> {}".format(key, before[key], undone[key])
+
+    # 2. The source edited as the property editor does it, lowering the count.
+    FreeCAD.setActiveTransaction("Edit Box Height")
+    box.Height = 100
+    doc.recompute()
+    FreeCAD.closeActiveTransaction()
+    FreeCADGui.updateGui()
+    assert sliceform.PatchCount == 6, sliceform.PatchCount
+    assert len(children.patches_of(sliceform)) == 6, len(children.patches_of(sliceform))
+    assert doc.UndoNames == ["Edit Box Height", "Create sliceform"], doc.UndoNames
+    FreeCADGui.runCommand("Std_Undo")
+    doc.recompute()
+    FreeCADGui.updateGui()
+    undone = snapshot(doc, sliceform)
+    for key in ("objects", "views", "patches", "results", "touched"):
+        assert undone[key] == before[key], "Undo of the edit: {} {} -> {}".format(key, before[key], undone[key])
+
+    # 3. Delete: the children go, the source shows again; one Undo brings all back.
+    FreeCADGui.Selection.clearSelection()
+    FreeCADGui.Selection.addSelection(sliceform)
+    click_away_dialogs(QtGui.QMessageBox.Yes)
+    FreeCADGui.runCommand("Std_Delete")
+    FreeCADGui.updateGui()
+    left = [o.Name for o in doc.Objects if o.Name.startswith("Sliceform")]
+    assert not left, "Delete left {}".format(left)
+    assert sorted(o.Name for o in doc.Objects) == ["Box", "Cut", "Hole"], [o.Name for o in doc.Objects]
+    assert cut.ViewObject.Visibility, "the source stayed hidden"
+    assert len(doc.UndoNames) == 2, doc.UndoNames
+    doc.undo()
+    doc.recompute()
+    FreeCADGui.updateGui()
+    sliceform = doc.getObject("Sliceform")
+    restored = snapshot(doc, sliceform)
+    for key in ("objects", "views", "patches", "results", "touched"):
+        assert restored[key] == before[key], "Undo of Delete: {}".format(key)
+
+    # 4. Save and reopen: no page opens, nothing to recompute, Export at once.
+    path = os.path.join(tempfile.mkdtemp(), "children.FCStd")
+    doc.saveAs(path)
+    FreeCAD.closeDocument(doc.Name)
+    FreeCADGui.updateGui()
+    doc = FreeCAD.openDocument(path)
+    FreeCADGui.updateGui()
+    assert not page_windows(), "{} pages opened by themselves".format(len(page_windows()))
+    sliceform = doc.getObject("Sliceform")
+    touched = [o.Name for o in doc.Objects if "Touched" in o.State]
+    assert not touched, "marked for recompute after reopen: {}".format(touched)
+    # Export layout, the command as a user runs it (its folder dialog answered).
+    folder = tempfile.mkdtemp()
+    ask = QtGui.QFileDialog.getExistingDirectory
+    QtGui.QFileDialog.getExistingDirectory = staticmethod(lambda *args, **kwargs: folder)
+    try:
+        FreeCADGui.Selection.clearSelection()
+        FreeCADGui.Selection.addSelection(sliceform)
+        FreeCADGui.runCommand("Sliceform_Export")
+    finally:
+        QtGui.QFileDialog.getExistingDirectory = ask
+    written = sorted(os.listdir(folder))
+    assert "sheet-1.dxf" in written and "report.json" in written, written
+    touched = [o.Name for o in doc.Objects if "Touched" in o.State]
+    assert not touched and doc.UndoNames == [], "Export changed the document: {} {}".format(touched, doc.UndoNames)
+    # Show report, then "Save report.json...", after a reopen (the design is made again).
+    FreeCAD.closeDocument(doc.Name)
+    doc = FreeCAD.openDocument(path)
+    sliceform = doc.getObject("Sliceform")
+    assert sliceform.Proxy.design is None
+    saved = os.path.join(tempfile.mkdtemp(), "report.json")
+    ask_file = QtGui.QFileDialog.getSaveFileName
+    QtGui.QFileDialog.getSaveFileName = staticmethod(lambda *args, **kwargs: (saved, ""))
+
+    def press_save():
+        box = QtGui.QApplication.activeModalWidget()
+        buttons = [b for b in box.buttons() if b.text().startswith("Save report")] if box else []
+        if buttons:
+            buttons[0].click()
+        else:
+            QtCore.QTimer.singleShot(50, press_save)
+
+    QtCore.QTimer.singleShot(50, press_save)
+    try:
+        FreeCADGui.Selection.clearSelection()
+        FreeCADGui.Selection.addSelection(sliceform)
+        FreeCADGui.runCommand("Sliceform_Report")
+    finally:
+        QtGui.QFileDialog.getSaveFileName = ask_file
+    import json
+
+    with open(saved) as f:
+        assert len(json.load(f)["patches"]) == sliceform.PatchCount, "report.json"
+
+    wait()
+    tree = max(FreeCADGui.getMainWindow().findChildren(QtGui.QTreeWidget), key=lambda t: t.topLevelItemCount())
+    item = tree_item(tree, sliceform.Label)
+    assert item.childCount() == sliceform.PatchCount + sliceform.SheetCount, "tree children after reopen"
+    outcome = "ok"
+except Exception:
+    outcome = traceback.format_exc()
+with open(result_path, "w") as f:
+    f.write(outcome)
+os._exit(0)
