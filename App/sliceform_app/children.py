@@ -15,6 +15,7 @@ removes or recomputes other objects: sync() does, only when the patches or their
 differ from what the children show, as a step of its own inside the transaction of the
 edit that caused it (a command, the task panel, or the document's recompute)."""
 import os
+import time
 
 import FreeCAD
 import Part
@@ -259,7 +260,35 @@ def _new_view(doc, page, sheet_patch, sheets):
     return view
 
 
+def settle_views(seconds=60):
+    """Lets every TechDraw view finish what its threads are doing. FreeCAD 1.0 computes a
+    view's hidden lines, then its faces, in Qt's global thread pool and finishes the job in
+    the view when the result arrives through the event loop; a view removed meanwhile gets
+    that call with no name in the document and throws (std::logic_error through the event
+    loop: headless, a crashed interpreter). FreeCAD 0.20 computes views in the recompute,
+    and this returns at once. User input is not processed while waiting."""
+    try:
+        from PySide import QtCore
+    except ImportError:
+        return
+    app = QtCore.QCoreApplication.instance()
+    if app is None:
+        return
+    pool = QtCore.QThreadPool.globalInstance()
+    deadline = time.monotonic() + seconds
+    while time.monotonic() < deadline:
+        pool.waitForDone(100)
+        # A finished hidden-line pass starts face finding: loop until both are delivered.
+        app.processEvents(QtCore.QEventLoop.ExcludeUserInputEvents)
+        if pool.activeThreadCount() == 0:
+            app.processEvents(QtCore.QEventLoop.ExcludeUserInputEvents)
+            if pool.activeThreadCount() == 0:
+                return
+
+
 def remove_objects(doc, objects):
+    if any(o.TypeId == "TechDraw::DrawViewPart" or o.TypeId == "TechDraw::DrawPage" for o in objects):
+        settle_views()
     names = [o.Name for o in objects]
     for name in names:
         obj = doc.getObject(name)

@@ -211,7 +211,13 @@ class TestSliceformChildren(unittest.TestCase):
             )
         run = subprocess.run([shutil.which("freecadcmd"), script], capture_output=True, text=True, timeout=300)
         out = run.stdout + run.stderr
-        self.assertEqual(out.count("does not fit a 40x40 sheet"), 1, out[-2000:])
+        lines = [line for line in out.splitlines() if "does not fit a 40x40 sheet" in line]
+        # FreeCAD 1.0's recompute adds a line of its own for every failed object, "<label>:
+        # <message>"; 0.20 says "Recompute failed! Please check report view." instead.
+        if int(FreeCAD.Version()[0]) >= 1 and len(lines) == 2:
+            self.assertTrue(lines[1].startswith("S sliceform: patch U0"), lines)
+            lines = lines[:1]
+        self.assertEqual(len(lines), 1, out[-2000:])
         self.assertIn("choose a larger SheetSize or a smaller Size", out)
         self.assertNotIn("Traceback", out)
         self.assertNotIn('File "', out)
