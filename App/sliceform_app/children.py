@@ -4,10 +4,14 @@ way TechDraw views depend on their source:
 
 - a *patch* (Part::Part2DObjectPython) per patch: its exact outline as a face on its
   plane, with the properties `Sliceform` (link) and `Index`;
-- a *sheet patch* (Part::FeaturePython) per patch, linking the patch: the patch as it lies
-  on its sheet (cut curves and engraved labels, sheet millimetres);
+- a *sheet patch* (Part::FeaturePython) per patch, linking the patch: the curves that cut
+  the patch out of its sheet, in sheet millimetres;
 - a TechDraw page per sheet (dynamic properties `Sliceform` and `SheetIndex`) with a
-  template of the sheet's size and one view per sheet patch.
+  template of the sheet's size and one view per sheet patch;
+- an *engraving* (Part::FeaturePython) per sheet, linking the sliceform and its sheet: the
+  engraved strokes (ids, partner labels) of every patch on that sheet, in one view of its
+  own, so that TechDraw's DXF puts them on their own layer (`..._Engrave`), apart from the
+  cuts (a layer per patch view).
 
 Each child builds its geometry in its own execute() from the design the Sliceform's proxy
 holds in memory (designed again on demand, after a reopen). The feature itself never adds,
@@ -65,9 +69,25 @@ def pages_of(sliceform):
     return sorted(found, key=lambda o: o.SheetIndex)
 
 
+def engravings_of(sliceform):
+    """The engraving children of a sliceform, by sheet."""
+    found = [o for o in sliceform.InList if _proxy_type(o) == "SliceformEngraving" and o.Sliceform == sliceform]
+    return sorted(found, key=lambda o: o.SheetIndex)
+
+
+def views_of(obj):
+    """The TechDraw views that show obj (a sheet patch or an engraving)."""
+    return [o for o in obj.InList if o.TypeId == "TechDraw::DrawViewPart"]
+
+
+def patch_views(page):
+    """The views of a page that show patches (not its engraving)."""
+    return [v for v in page.Views if v.Source and _proxy_type(v.Source[0]) == "SliceformSheetPatch"]
+
+
 def owned_objects(sliceform):
     """Everything the sliceform made, in an order that can be removed one by one: views,
-    templates and pages first, then sheet patches, then patches."""
+    templates and pages first, then engravings, sheet patches, then patches."""
     out = []
     for page in pages_of(sliceform):
         out.extend(v for v in page.Views)
@@ -75,6 +95,9 @@ def owned_objects(sliceform):
         if template is not None and not isinstance(template, str):
             out.append(template)
         out.append(page)
+    for engraving in engravings_of(sliceform):
+        out.extend(v for v in views_of(engraving) if v not in out)
+        out.append(engraving)
     patches = patches_of(sliceform)
     for patch in patches:
         sheet_patch = sheet_patch_of(patch)
@@ -148,11 +171,17 @@ class Patch(_Child):
         self.built = built
 
 
+def _on_sheet(shapes, sheets):
+    """shapes and two vertices at the sheet's corners, so that the compound's box is the
+    sheet (TechDraw centres a view on its shape's box: the view then sits at the sheet's
+    centre and the page shows the sheet at 1:1)."""
+    corners = [Part.Vertex(0, 0, 0), Part.Vertex(sheets["width"], sheets["height"], 0)]
+    return Part.makeCompound(shapes + corners)
+
+
 class SheetPatch(_Child):
-    """A patch as it lies on its sheet, for the TechDraw view that shows it: the cut curves
-    and the engraved strokes in sheet millimetres, with two vertices at the sheet's corners
-    so that the shape's box is the sheet (TechDraw centres a view on its shape's box: the
-    view then sits at the sheet's centre and the page shows the sheet at 1:1)."""
+    """A patch as it lies on its sheet, for the TechDraw view that shows it: the curves that
+    cut it out, in sheet millimetres, on the sheet's box (_on_sheet)."""
 
     Type = "SliceformSheetPatch"
 
@@ -181,9 +210,46 @@ class SheetPatch(_Child):
         built = (sliceform.Proxy.key, patch.Index)
         if getattr(self, "built", None) == built and not obj.Shape.isNull():
             return
+        obj.Shape = _on_sheet(geometry.patch_cuts(drawing), sliceform.Proxy.sheets(sliceform))
+        self.built = built
+
+
+class Engraving(_Child):
+    """What is engraved on one sheet: the strokes of every patch on it, in sheet millimetres,
+    on the sheet's box (_on_sheet), for a view of its own."""
+
+    Type = "SliceformEngraving"
+
+    def __init__(self, obj):
+        obj.Proxy = self
+        self.initProperties(obj)
+
+    def initProperties(self, obj):
+        have = obj.PropertiesList
+        if "Sliceform" not in have:
+            obj.addProperty("App::PropertyLink", "Sliceform", "Engraving",
+                            QT_TRANSLATE_NOOP("App::Property", "The sliceform whose labels these are"))
+        if "SheetIndex" not in have:
+            obj.addProperty("App::PropertyInteger", "SheetIndex", "Engraving",
+                            QT_TRANSLATE_NOOP("App::Property", "Which sheet of the layout"))
+        for name in ("Sliceform", "SheetIndex"):
+            obj.setEditorMode(name, 1)
+
+    def onDocumentRestored(self, obj):
+        self.initProperties(obj)
+
+    def execute(self, obj):
+        sliceform = obj.Sliceform
+        if not is_sliceform(sliceform):
+            raise ValueError(QT_TRANSLATE_NOOP("Sliceform", "this engraving's sliceform was deleted"))
         sheets = sliceform.Proxy.sheets(sliceform)
-        corners = [Part.Vertex(0, 0, 0), Part.Vertex(sheets["width"], sheets["height"], 0)]
-        obj.Shape = Part.makeCompound(geometry.patch_drawing(drawing).childShapes() + corners)
+        if obj.SheetIndex >= len(sheets["sheets"]):
+            return  # left over from a larger design until the sync that follows removes it
+        built = (sliceform.Proxy.key, obj.SheetIndex)
+        if getattr(self, "built", None) == built and not obj.Shape.isNull():
+            return
+        strokes = [s for p in sheets["sheets"][obj.SheetIndex] for s in geometry.patch_engraving(p)]
+        obj.Shape = _on_sheet(strokes, sheets)
         self.built = built
 
 
@@ -251,10 +317,26 @@ def _new_page(doc, sliceform, index):
     return page
 
 
-def _new_view(doc, page, sheet_patch, sheets):
-    view = doc.addObject("TechDraw::DrawViewPart", sheet_patch.Patch.Name + "_View")
+def _new_engraving(doc, sliceform, page):
+    """A page's engraving and its view, named ..._Engrave: TechDraw's DXF writes each view on
+    a layer named after it, so a laser's software can map that layer to engraving."""
+    obj = doc.addObject("Part::FeaturePython", "{}_Engraving{:02d}".format(sliceform.Name, page.SheetIndex + 1))
+    Engraving(obj)
+    obj.Sliceform = sliceform
+    obj.SheetIndex = page.SheetIndex
+    if FreeCAD.GuiUp:
+        from sliceform_gui import view_provider
+
+        view_provider.ViewProviderSheetPatch(obj.ViewObject)
+        obj.ViewObject.Visibility = False
+    view = _new_view(doc, page, obj, "{}_Sheet{:02d}_Engrave".format(sliceform.Name, page.SheetIndex + 1))
+    return obj, view
+
+
+def _new_view(doc, page, source, name):
+    view = doc.addObject("TechDraw::DrawViewPart", name)
     page.addView(view)
-    view.Source = [sheet_patch]
+    view.Source = [source]
     view.Direction, view.XDirection = V(0, 0, 1), V(1, 0, 0)
     view.ScaleType, view.Scale = "Custom", 1.0
     return view
@@ -364,7 +446,7 @@ def wanted(sliceform):
     for s, patches in enumerate(sheets["sheets"]):
         for p in patches:
             sheet_of[p["id"]] = s
-    pages = [(_page_label(sliceform, i), _sheet_text(sheets)) for i in range(len(sheets["sheets"]))]
+    pages = [(_page_label(sliceform, i), _sheet_text(sheets), True) for i in range(len(sheets["sheets"]))]
     centre = (round(sheets["width"] / 2, 6), round(sheets["height"] / 2, 6))
     return ids, [sheet_of.get(i, -1) for i in ids], pages, [centre] * len(ids)
 
@@ -384,7 +466,9 @@ def shown(sliceform):
         views = [] if sheet_patch is None else [o for o in sheet_patch.InList if o.TypeId == "TechDraw::DrawViewPart"]
         sheets.append(page_of_view.get(views[0].Name, -1) if len(views) == 1 else -2)
         centres.append((round(views[0].X.Value, 6), round(views[0].Y.Value, 6)) if views else None)
-    return ids, sheets, [(p.Label, getattr(p, "Sheet", "")) for p in pages], centres
+    engraved = {e.SheetIndex for e in engravings_of(sliceform) if len(views_of(e)) == 1}
+    pages = [(p.Label, getattr(p, "Sheet", ""), p.SheetIndex in engraved) for p in pages]
+    return ids, sheets, pages, centres
 
 
 def sync(sliceform, recompute=True):
@@ -434,6 +518,28 @@ def sync(sliceform, recompute=True):
             page.Template.Template = template_for(sheets)
             page.Sheet = _sheet_text(sheets)
 
+    # An engraving per page (documents made before engravings get theirs here).
+    engravings = engravings_of(sliceform)
+    for engraving in engravings:
+        if engraving.SheetIndex >= sheet_count:
+            remove_objects(doc, views_of(engraving) + [engraving])
+    have = {e.SheetIndex: e for e in engravings if e.SheetIndex < sheet_count}
+    engraved = []
+    for page in pages:
+        engraving = have.get(page.SheetIndex)
+        if engraving is None:
+            engraving, view = _new_engraving(doc, sliceform, page)
+        else:
+            found = views_of(engraving)
+            remove_objects(doc, found[1:])
+            view = found[0] if found else _new_view(doc, page, engraving, "{}_Sheet{:02d}_Engrave".format(
+                sliceform.Name, page.SheetIndex + 1))
+        if (round(view.X.Value, 6), round(view.Y.Value, 6)) != (round(sheets["width"] / 2, 6), round(sheets["height"] / 2, 6)):
+            view.X, view.Y = sheets["width"] / 2, sheets["height"] / 2
+        if view.Label != "engraving":
+            view.Label = "engraving"
+        engraved += [engraving, view]
+
     # Labels go through a temporary name first: FreeCAD keeps labels unique, and a label
     # taken by a sibling for a moment would come out renumbered ("U002" for U1).
     views = []
@@ -442,7 +548,7 @@ def sync(sliceform, recompute=True):
         found = [o for o in sheet_patch.InList if o.TypeId == "TechDraw::DrawViewPart"]
         for view in found[1:]:
             remove_objects(doc, [view])
-        view = found[0] if found else _new_view(doc, pages[s], sheet_patch, sheets)
+        view = found[0] if found else _new_view(doc, pages[s], sheet_patch, patch.Name + "_View")
         owner = [p for p in pages if view in p.Views]
         if owner != [pages[s]]:
             for page in owner:
@@ -460,6 +566,7 @@ def sync(sliceform, recompute=True):
             (sheet_patch, "{} on sheet {}".format(patch_id, s + 1)),
             (view, patch_id),
         ]
+    labels += [(e, "{} engraving {}".format(sliceform.Label, e.SheetIndex + 1)) for e in engraved[::2]]
     labels = [(obj, label) for obj, label in labels if obj.Label != label]
     for obj, _label in labels:
         obj.Label = obj.Name + "_"
@@ -468,17 +575,17 @@ def sync(sliceform, recompute=True):
 
     # The new and changed children are built now, by a recompute of the document (none
     # can run inside another: then each is built alone and stays marked for recompute).
-    changed = [p.Template for p in pages] + [o for v in views for o in v] + pages
+    changed = [p.Template for p in pages] + [o for v in views for o in v] + engraved + pages
     if recompute:
         doc.recompute([o for o in changed if "Touched" in o.State])
     else:
-        order = [p.Template for p in pages] + [v[i] for i in range(3) for v in views] + pages
+        order = [p.Template for p in pages] + [v[i] for i in range(3) for v in views] + engraved + pages
         for obj in order:
             if "Touched" in obj.State:
                 obj.recompute()
     # The tree asks a parent for its children when the parent changes; these link to it,
     # so it has not. ChildCount is an output: setting it marks nothing for recompute.
-    sliceform.ChildCount = len(patches) + len(pages)
+    sliceform.ChildCount = len(patches) + len(pages) + len(engraved) // 2
     return True
 
 

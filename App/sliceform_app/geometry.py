@@ -69,9 +69,11 @@ def plane_placement(patch):
     return FreeCAD.Placement(FreeCAD.Matrix(x.x, y.x, n.x, o.x, x.y, y.y, n.y, o.y, x.z, y.z, n.z, o.z, 0, 0, 0, 1))
 
 
-def patch_drawing(patch):
-    """One patch as drawn on its sheet: cut curves and engraved strokes, one compound in
-    sheet millimetres on the XY plane."""
-    cut = [c.toShape() for loop in patch["cut"] for c in loop_curves(loop, False)]
-    engrave = [Part.makePolygon([V(x, y, 0) for x, y in stroke]) for stroke in patch["engrave"] if len(stroke) > 1]
-    return Part.makeCompound(cut + engrave)
+def patch_cuts(patch):
+    """One patch's cut curves as drawn on its sheet, in sheet millimetres on the XY plane."""
+    return [c.toShape() for loop in patch["cut"] for c in loop_curves(loop, False)]
+
+
+def patch_engraving(patch):
+    """One patch's engraved strokes (its id, partner labels, marks) as drawn on its sheet."""
+    return [Part.makePolygon([V(x, y, 0) for x, y in stroke]) for stroke in patch["engrave"] if len(stroke) > 1]

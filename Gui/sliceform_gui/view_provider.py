@@ -42,7 +42,7 @@ class ViewProviderSliceform(_Stateless):
         from sliceform_app import children
 
         obj = self.Object
-        return children.pages_of(obj) + children.patches_of(obj)
+        return children.pages_of(obj) + children.patches_of(obj) + children.engravings_of(obj)
 
     def onDelete(self, vobj, subelements):
         """Deletes the children with the feature (in the same Delete step) and shows the

@@ -68,7 +68,9 @@ class TestSliceformChildren(unittest.TestCase):
         pages = children.pages_of(sliceform)
         self.assertEqual(len(patches), sliceform.PatchCount)
         self.assertEqual(len(pages), sliceform.SheetCount)
-        self.assertEqual(sum(len(p.Views) for p in pages), sliceform.PatchCount)
+        self.assertEqual(sum(len(children.patch_views(p)) for p in pages), sliceform.PatchCount)
+        self.assertEqual([len(children.views_of(e)) for e in children.engravings_of(sliceform)], [1] * len(pages))
+        self.assertEqual([e.SheetIndex for e in children.engravings_of(sliceform)], list(range(len(pages))))
         report = json.loads(sliceform.Proxy.report_json(sliceform))
         self.assertEqual([p.PatchId for p in patches], [f["id"] for f in sliceform.Proxy.flat_patches(sliceform)])
         self.assertEqual(sorted(p.PatchId for p in patches), sorted(p["id"] for p in report["patches"]))
@@ -283,12 +285,55 @@ class TestSliceformChildren(unittest.TestCase):
         placed = {p["id"]: s for s, sheet in enumerate(sliceform.Proxy.sheets(sliceform)["sheets"]) for p in sheet}
         seen = []
         for page in children.pages_of(sliceform):
-            for view in page.Views:
+            for view in children.patch_views(page):
                 patch = view.Source[0].Patch
                 self.assertEqual(view.Label, patch.PatchId)
                 self.assertEqual(placed[patch.PatchId], page.SheetIndex)
                 seen.append(view.Label)
         self.assertEqual(sorted(seen), sorted(placed))
+
+    def test_techdraw_dxf_keeps_arcs_and_puts_the_engraving_on_a_layer_of_its_own(self):
+        """TechDraw's own DXF of a sheet whose patches have a round hole: the hole's arcs
+        are ARC entities, and the labels are on the page's ..._Engrave layer, apart from
+        the cuts (a layer per patch view), so a laser's software can map them."""
+        import collections
+        import re
+
+        import TechDraw
+        from TestSliceformFeature import wait_for_views
+        from sliceform_app import children
+
+        box = self.doc.addObject("Part::Box", "Box")
+        box.Length, box.Width, box.Height = 80, 60, 40
+        hole = self.doc.addObject("Part::Cylinder", "Hole")  # along x: circles on the U patches
+        hole.Radius, hole.Height = 12, 100
+        hole.Placement = FreeCAD.Placement(FreeCAD.Vector(-10, 30, 20), FreeCAD.Rotation(FreeCAD.Vector(0, 1, 0), 90))
+        cut = self.doc.addObject("Part::Cut", "Cut")
+        cut.Base, cut.Tool = box, hole
+        self.doc.recompute()
+        sliceform = self.create(cut, Slices=16)
+        self.check_children(sliceform)
+        page = children.pages_of(sliceform)[0]
+        wait_for_views(page)
+        path = os.path.join(tempfile.mkdtemp(), "sheet.dxf")
+        TechDraw.writeDXFPage(page, path)
+        with open(path) as f:
+            text = f.read()
+        # (layer, entity) of every entity in the ENTITIES section
+        entities = text[text.index("ENTITIES"):]
+        found = collections.Counter(
+            (layer, kind) for kind, layer in re.findall(r"\n  0\n(LINE|ARC|CIRCLE|SPLINE|LWPOLYLINE)\n(?:.*\n)*?  8\n([^\n]+)\n", entities))
+        engrave_layer = "{}_Sheet01_Engrave".format(sliceform.Name)
+        cut_layers = {v.Name for v in children.patch_views(page)}
+        self.assertGreater(sum(n for (layer, kind), n in found.items() if layer in cut_layers and kind in ("ARC", "CIRCLE")), 0, found)
+        self.assertGreater(sum(n for (layer, _kind), n in found.items() if layer == engrave_layer), 20, found)
+        self.assertEqual({layer for layer, _kind in found} - cut_layers - {engrave_layer, "0"}, set(), found)
+        # The cut layers hold the cuts alone: as many curves as the sheet patches' edges.
+        cuts = sum(len(v.Source[0].Shape.Edges) for v in children.patch_views(page))
+        self.assertEqual(sum(n for (layer, _kind), n in found.items() if layer in cut_layers), cuts)
+        engraved = [p for p in sliceform.Proxy.sheets(sliceform)["sheets"][0]]
+        strokes = sum(len(s) - 1 for p in engraved for s in p["engrave"] if len(s) > 1)
+        self.assertEqual(len(children.engravings_of(sliceform)[0].Shape.Edges), strokes)
 
     def test_a_new_sheet_size_moves_the_views_and_the_template(self):
         """Same patches on the same number of sheets, another sheet size: the pages get a
