@@ -68,6 +68,7 @@ struct DesignOptions : ModelOptions {
   bool noRotate = false;
   std::string scheme = "both";
   std::string directions = "given";
+  bool frameChosen = false;  // --u, --v or --directions on the command line
   bool coupon = false;
   std::string slotEnd = "square";
   std::string uSlots = "up";
@@ -200,8 +201,56 @@ void runDesign(DesignOptions o) {
     if (writer) writer->start(partial);
   };
   DirectionChoice choice;
-  const Design d = o.directions == "auto" ? designInBestFrame(model, o.params, choice, std::ref(bar), ready)
-                                          : runDesign(model, o.params, std::ref(bar), ready);
+  // --height measures along the file's W: its frame is then chosen too.
+  const bool mayTurn = !o.frameChosen && o.height == 0;
+  std::optional<Design> given;
+  std::string refusal;  // why the file's axes give no buildable design
+  const auto begun = std::chrono::steady_clock::now();
+  if (o.directions == "auto") {
+    given = designInBestFrame(model, o.params, choice, std::ref(bar), ready);
+  } else {
+    try {
+      given = runDesign(model, o.params, std::ref(bar), ready);
+      const std::vector<std::string> problems = designProblems(*given);
+      if (!problems.empty()) refusal = problems.front();
+    } catch (const Error& e) {
+      if (e.kind() != ErrorKind::Unbuildable || !mayTurn) throw;
+      refusal = e.what();
+    }
+  }
+  // The file's axes are no one's choice when none was given: where they give no design a
+  // maker can build, other directions may (TR12J_OCC.stl: a patch in pieces at the file's
+  // axes, buildable turned). The design in the best frame is kept only if it can be built.
+  const double firstMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - begun).count();
+  if (!refusal.empty() && mayTurn) {
+    bar.clear();
+    std::printf("directions the file's axes give no buildable design (%s); trying others (--directions auto)\n",
+                refusal.c_str());
+    std::fflush(stdout);
+    if (writer) writer->discard();
+    DirectionChoice other;
+    std::optional<Design> turned;
+    try {
+      turned = designInBestFrame(model, o.params, other, std::ref(bar), ready);
+    } catch (const Error& e) {
+      if (e.kind() != ErrorKind::Unbuildable && e.kind() != ErrorKind::BadInput) throw;
+    }
+    if (turned && designProblems(*turned).empty()) {
+      turned->timings.insert(turned->timings.begin(), {"directions (the file's axes, not buildable)", firstMs});
+      given = std::move(turned);
+      choice = std::move(other);
+      choice.why = "the file's axes gave no buildable design; " + choice.why;
+    } else {
+      bar.clear();
+      std::printf("directions no other frame tried gives a buildable design either: the file's axes kept\n");
+      if (!given) throw Error(ErrorKind::Unbuildable, refusal);
+      if (writer) {
+        writer->discard();
+        writer->start(*given);
+      }
+    }
+  }
+  const Design& d = *given;
   if (choice.automatic) {
     // From here on, as if they had been given: report.json's parameters carry them.
     p.u = choice.trials[choice.chosen].u;
@@ -319,7 +368,8 @@ Run addDesignCommand(CLI::App& app) {
   cmd->add_option("--directions", o->directions,
                   "given: slice along --u and --v; auto: try the model's principal axes and the file's axes, "
                   "each up and the families turned about it, and keep the buildable frame that scores best "
-                  "(report.json lists them; 1.5-3 times the time of one design)")
+                  "(report.json lists them; 1.5-3 times the time of one design). With none of --u, --v, "
+                  "--directions, --height: the file's axes, and auto when they give no buildable design")
       ->check(CLI::IsMember({"given", "auto"}))
       ->excludes(cmd->get_option("--u"))
       ->excludes(cmd->get_option("--v"))
@@ -351,7 +401,10 @@ Run addDesignCommand(CLI::App& app) {
          "--time-limit", o->params.timeLimit,
          "seconds the design may take before its searches stop with the best found (exit 1); 0: none")
       ->capture_default_str();
-  return [o] { runDesign(*o); };
+  return [o, cmd] {
+    o->frameChosen = cmd->count("--u") + cmd->count("--v") + cmd->count("--directions") > 0;
+    runDesign(*o);
+  };
 }
 
 }  // namespace sliceform::cli

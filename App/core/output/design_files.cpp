@@ -38,10 +38,15 @@ DesignFilesWriter::DesignFilesWriter(std::string folder, double foldAngleDegrees
     : folder_(std::move(folder)), foldAngle_(foldAngleDegrees) {}
 
 DesignFilesWriter::~DesignFilesWriter() {
-  if (!step_.valid()) return;
   // The run failed after start(): what an earlier run wrote stays as it was. The STEP file
   // went to a name of its own, which goes, and so does the folder if this run made it.
+  discard();
+}
+
+void DesignFilesWriter::discard() {
+  if (!step_.valid()) return;
   step_.wait();
+  step_ = {};
   std::error_code ignored;
   fs::remove(stepFile_, ignored);
   if (madeFolder_) fs::remove(folder_, ignored);  // only if empty

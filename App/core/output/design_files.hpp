@@ -42,8 +42,12 @@ class DesignFilesWriter {
   DesignFilesWriter(const DesignFilesWriter&) = delete;
   DesignFilesWriter& operator=(const DesignFilesWriter&) = delete;
 
-  // Starts writing assembly.step; the design's arrangement and patches are final. Once only.
+  // Starts writing assembly.step; the design's arrangement and patches are final. Once only,
+  // unless discard() came between.
   void start(const Design& design);
+  // Drops what start() began (the caller goes on with another design): waits for the STEP
+  // thread and removes its file.
+  void discard();
   // Writes the other files (starting the STEP file first if start() was not called).
   DesignFiles finish(const Model& model, const DesignParams& params, const Design& design,
                      const std::vector<StageTime>& before = {});
