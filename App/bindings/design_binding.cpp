@@ -19,6 +19,7 @@
 #include "output/report_json.hpp"
 #include "pipeline/design.hpp"
 #include "pipeline/directions.hpp"
+#include "pipeline/parameter_schema.hpp"
 #include "support/error.hpp"
 
 namespace py = pybind11;
@@ -74,8 +75,8 @@ Run readParams(py::dict given) {
   s.end = slotEnd == "round" ? SlotEnd::Round : SlotEnd::Square;
   take(d, "u_slots", uSlots);
   s.uUp = uSlots != "down";
-  double margin = 10, spacing = 3;
-  bool rotate = true;
+  double margin = parameterSpec("margin").value, spacing = parameterSpec("spacing").value;
+  bool rotate = parameterSpec("rotate").value != 0;
   take(d, "sheet", sheet);
   take(d, "margin", margin);
   take(d, "spacing", spacing);
@@ -253,6 +254,33 @@ void bindDesign(py::module_& m) {
           py::arg("folder"), py::arg("fold_angle") = 90.0,
           "Writes the same files as `sliceform design -o FOLDER`; returns their names");
 
+  m.def(
+      "parameter_schema",
+      [] {
+        py::list out;
+        for (const ParamSpec& s : designParameterSchema()) {
+          py::dict d;
+          d["key"] = s.key, d["option"] = s.option, d["property"] = s.property, d["group"] = s.group;
+          const char* kinds[] = {"real", "integer", "bool", "choice", "direction"};
+          d["kind"] = kinds[static_cast<int>(s.kind)];
+          d["unit"] = s.unit;
+          switch (s.kind) {
+            case ParamKind::Integer: d["default"] = static_cast<long>(s.value); break;
+            case ParamKind::Bool: d["default"] = s.value != 0; break;
+            case ParamKind::Choice: d["default"] = s.choices.front(); break;
+            case ParamKind::Direction: d["default"] = py::tuple(py::cast(s.direction)); break;
+            default: d["default"] = s.value;
+          }
+          d["choices"] = s.choices;
+          d["min"] = s.min, d["max"] = s.max, d["step"] = s.step;
+          d["label"] = s.label, d["help"] = s.help;
+          out.append(d);
+        }
+        return out;
+      },
+      "The design's parameters, one dict each: key (this module's parameter), option (the CLI's), "
+      "property (FreeCAD's), group, kind (real, integer, bool, choice, direction), unit, default, "
+      "choices, min, max (what the core accepts), step, label and help");
   m.def(
       "design",
       [](const py::dict& source, const py::dict& params, const py::object& progress) {

@@ -41,19 +41,11 @@ void runCoupon(CouponOptions o) {
 }  // namespace
 
 void addSlotOptions(CLI::App* cmd, SlotParams& slots, HingeRules& rules, StabilizeOptions& spacing) {
-  cmd->add_option("--thickness", slots.thickness, "mm of material (0.3 for card, 3 for plywood)")
-      ->capture_default_str();
-  cmd->add_option("--clearance", slots.clearance, "mm added to the thickness for the slot width")
-      ->capture_default_str();
-  cmd->add_option("--kerf", slots.kerf, "mm the cutter removes; cut paths are moved out by half")
-      ->capture_default_str();
-  cmd->add_option("--min-slot-edge-distance", rules.minSlotEdgeDistance,
-                  "mm of paper to keep on each side of a slot")
-      ->capture_default_str();
-  cmd->add_option("--min-spacing", spacing.minSpacing,
-                  "mm between two patches of one family that overlap seen along their normal, so paper "
-                  "is left between their slots (0: slot width + min slot-edge distance)")
-      ->capture_default_str();
+  addParameter(cmd, "thickness", slots.thickness);
+  addParameter(cmd, "clearance", slots.clearance);
+  addParameter(cmd, "kerf", slots.kerf);
+  addParameter(cmd, "min_slot_edge_distance", rules.minSlotEdgeDistance);
+  addParameter(cmd, "min_spacing", spacing.minSpacing);
 }
 
 Run addCouponCommand(CLI::App& app) {

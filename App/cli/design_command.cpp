@@ -61,18 +61,18 @@ Exit codes:
 
 struct DesignOptions : ModelOptions {
   std::string output;
-  double size = 150;
-  double height = 0;
-  std::string sheet = "A4";
-  double margin = 10, spacing = 3;
-  bool noRotate = false;
-  std::string scheme = "both";
-  std::string directions = "given";
+  double size = parameterSpec("size").value;
+  double height = parameterSpec("height").value;
+  std::string sheet = parameterSpec("sheet").choices.front();
+  double margin = parameterSpec("margin").value, spacing = parameterSpec("spacing").value;
+  bool noRotate = parameterSpec("rotate").value == 0;
+  std::string scheme = parameterSpec("scheme").choices.front();
+  std::string directions = parameterSpec("directions").choices.front();
   bool frameChosen = false;  // --u, --v or --directions on the command line
   bool coupon = false;
-  std::string slotEnd = "square";
-  std::string uSlots = "up";
-  double foldAngle = 90;
+  std::string slotEnd = parameterSpec("slot_end").choices.front();
+  std::string uSlots = parameterSpec("u_slots").choices.front();
+  double foldAngle = parameterSpec("fold_angle").value;
   DesignParams params;
 };
 
@@ -340,67 +340,32 @@ Run addDesignCommand(CLI::App& app) {
   cmd->add_option("-o,--output", o->output,
                   "folder to write the sheets, the 3D assembly and report.json into (created if missing; "
                   "files are replaced whole)");
-  CLI::Option* size =
-      cmd->add_option("--size", o->size,
-                      "scale the model so its longest side is this many mm (0: keep its size; mesh files "
-                      "carry no unit)")
-          ->capture_default_str();
-  cmd->add_option("--height", o->height, "scale the model so its height along W (u x v) is this many mm")
-      ->excludes(size);
-  cmd->add_option("--sheet", o->sheet, "sheet size: A4, A3, Letter, or WxH in mm (e.g. 600x400)")
-      ->capture_default_str()
-      ->group("Sheets");
-  cmd->add_option("--margin", o->margin, "mm kept clear along every sheet edge")
-      ->capture_default_str()
-      ->group("Sheets");
-  cmd->add_option("--spacing", o->spacing, "mm between patches on a sheet")
-      ->capture_default_str()
-      ->group("Sheets");
-  cmd->add_flag("--no-rotate", o->noRotate, "keep every patch upright on the sheet (grain, printed textures)")
-      ->group("Sheets");
-  cmd->add_option("-n,--slices", o->params.arrangement.slices, "slices per direction")->capture_default_str();
-  cmd->add_option("--interval", o->params.arrangement.interval, "slice interval in mm (overrides --slices)");
-  cmd->add_option("--tau-a", o->params.arrangement.tauA,
-                  "cylinder error budget, relative to each part's volume")
-      ->capture_default_str();
-  cmd->add_option("--tau-m", o->params.arrangement.tauM, "Reeb branch merge threshold (weight ratio)")
-      ->capture_default_str();
-  cmd->add_option("--directions", o->directions,
-                  "given: slice along --u and --v; auto: try the model's principal axes and the file's axes, "
-                  "each up and the families turned about it, and keep the buildable frame that scores best "
-                  "(report.json lists them; 1.5-3 times the time of one design). With none of --u, --v, "
-                  "--directions, --height: the file's axes, and auto when they give no buildable design")
-      ->check(CLI::IsMember({"given", "auto"}))
+  CLI::Option* size = addParameter(cmd, "size", o->size);
+  addParameter(cmd, "height", o->height)->excludes(size);
+  addParameter(cmd, "sheet", o->sheet)->group("Sheets");
+  addParameter(cmd, "margin", o->margin)->group("Sheets");
+  addParameter(cmd, "spacing", o->spacing)->group("Sheets");
+  cmd->add_flag(parameterSpec("rotate").option, o->noRotate, parameterSpec("rotate").help)->group("Sheets");
+  addParameter(cmd, "slices", o->params.arrangement.slices, "-n,--slices");
+  addParameter(cmd, "interval", o->params.arrangement.interval);
+  addParameter(cmd, "tau_a", o->params.arrangement.tauA);
+  addParameter(cmd, "tau_m", o->params.arrangement.tauM);
+  addParameter(cmd, "directions", o->directions)
+      ->description(parameterSpec("directions").help +
+                    "; report.json lists the frames. With none of --u, --v, --directions, --height: the "
+                    "file's axes, and auto when they give no buildable design")
       ->excludes(cmd->get_option("--u"))
-      ->excludes(cmd->get_option("--v"))
-      ->capture_default_str();
-  cmd->add_option("--scheme", o->scheme, "both, or u / v for one dominant direction")
-      ->check(CLI::IsMember({"both", "u", "v"}))
-      ->capture_default_str();
-  cmd->add_option("--min-hinge-length", o->params.arrangement.hinges.minHingeLength,
-                  "mm a hinge must be long to carry load")
-      ->capture_default_str();
+      ->excludes(cmd->get_option("--v"));
+  addParameter(cmd, "scheme", o->scheme);
+  addParameter(cmd, "min_hinge_length", o->params.arrangement.hinges.minHingeLength);
   addSlotOptions(cmd, o->params.slots, o->params.arrangement.hinges, o->params.arrangement.stabilize);
   cmd->add_flag("--coupon", o->coupon,
                 "also write the fit test coupon (sliceform coupon) into the output folder");
-  cmd->add_option("--slot-end", o->slotEnd, "square, or round closed slot ends")
-      ->check(CLI::IsMember({"square", "round"}))
-      ->capture_default_str();
-  cmd->add_option("--u-slots", o->uSlots,
-                  "up or down: which way U-patches are slotted first (V the other way)")
-      ->check(CLI::IsMember({"up", "down"}))
-      ->capture_default_str();
-  cmd->add_option("--fold-angle", o->foldAngle,
-                  "degrees between the families in the 3D assembly: 90 is "
-                  "popped up, small angles fold it flat")
-      ->capture_default_str();
-  cmd->add_option("--max-spacing", o->params.arrangement.stabilize.maxSpacing,
-                  "mm; add patches in long cylinders so none is farther apart (0: off)")
-      ->capture_default_str();
-  cmd->add_option(
-         "--time-limit", o->params.timeLimit,
-         "seconds the design may take before its searches stop with the best found (exit 1); 0: none")
-      ->capture_default_str();
+  addParameter(cmd, "slot_end", o->slotEnd);
+  addParameter(cmd, "u_slots", o->uSlots);
+  addParameter(cmd, "fold_angle", o->foldAngle);
+  addParameter(cmd, "max_spacing", o->params.arrangement.stabilize.maxSpacing);
+  addParameter(cmd, "time_limit", o->params.timeLimit);
   return [o, cmd] {
     o->frameChosen = cmd->count("--u") + cmd->count("--v") + cmd->count("--directions") > 0;
     runDesign(*o);

@@ -38,10 +38,10 @@ def initProperties(obj):
 
     add("App::PropertyLink", "Source", "Sliceform",
         QT_TRANSLATE_NOOP("App::Property", "The solid, body or mesh to design a sliceform for"))
-    if add("App::PropertyAngle", "FoldAngle", "Sliceform",
-           QT_TRANSLATE_NOOP("App::Property", "Angle between the families: 90 popped up, small folds flat")):
-        obj.FoldAngle = 90.0
-    for name, kind, group, default, _key, tip in parameters.PARAMETERS:
+    fold = parameters.spec("fold_angle")
+    if add("App::PropertyAngle", "FoldAngle", "Sliceform", fold["help"]):
+        obj.FoldAngle = fold["default"]
+    for name, kind, group, default, _key, tip in parameters.table():
         if add(kind, name, group, tip):
             if kind == "App::PropertyVector":
                 setattr(obj, name, FreeCAD.Vector(*default))
@@ -389,7 +389,9 @@ def preferred_properties():
     return values
 
 
-MESH_SIZE = 150.0  # mm, longest side of a mesh source unless given
+def mesh_size():
+    """mm, the longest side of a mesh source unless given: the schema's (the CLI's) size."""
+    return float(parameters.spec("size")["default"])
 
 
 def makeSliceform(source, doc=None, **properties):
@@ -398,7 +400,7 @@ def makeSliceform(source, doc=None, **properties):
     properties, recomputes it and makes its children. Returns it."""
     doc = doc or source.Document
     if shapes.is_mesh(source) and "Size" not in properties:
-        properties["Size"] = MESH_SIZE  # a mesh carries no unit: the CLI's default size
+        properties["Size"] = mesh_size()  # a mesh carries no unit: the CLI's default size
     obj = doc.addObject("Part::FeaturePython", "Sliceform")
     Sliceform(obj)
     obj.Source = source

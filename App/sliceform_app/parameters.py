@@ -1,56 +1,77 @@
 # SPDX-License-Identifier: LGPL-2.1-or-later
-"""The Sliceform feature's parameters: one table that makes the properties, reads them into
-the core's parameter dict, and gives the preferences page its defaults. Names on the core
-side are the CLI's (`sliceform design --help`)."""
+"""The Sliceform feature's parameters, made from the core's parameter schema
+(sliceform_native.parameter_schema(): name, kind, default, range, unit, group, help): the
+properties, the core's parameter dict, the task panel's rows. FreeCAD adds only what is its
+own: the custom sheet's width and height, and a solid's Size 0 (it keeps its true size; a
+mesh, which carries no unit, gets the schema's size)."""
 
-# (property, FreeCAD type, group, default, core key, tooltip)
-# Enumerations have their choices as default (the first is selected).
-PARAMETERS = (
-    ("Directions", "App::PropertyEnumeration", "Slicing", ["given", "auto"], "directions",
-     "auto (new features): slicing directions chosen for the model (its principal and the file's "
-     "axes, each up, the families turned about it; ChosenDirections says which); given: "
-     "UDirection and VDirection"),
-    ("UDirection", "App::PropertyVector", "Slicing", (1.0, 0.0, 0.0), "u",
-     "Normal of the U family of patches (global coordinates)"),
-    ("VDirection", "App::PropertyVector", "Slicing", (0.0, 1.0, 0.0), "v",
-     "Normal of the V family; must be orthogonal to U. W = U x V is 'up'"),
-    ("Slices", "App::PropertyInteger", "Slicing", 128, "slices", "Slices per direction"),
-    ("Interval", "App::PropertyLength", "Slicing", 0.0, "interval",
-     "Distance between slices; 0 uses Slices instead"),
-    ("TauA", "App::PropertyFloat", "Slicing", 0.1, "tau_a",
-     "Cylinder error budget, relative to each part's volume (paper: tauA)"),
-    ("TauM", "App::PropertyFloat", "Slicing", 0.03, "tau_m", "Reeb branch merge threshold (paper: tauM)"),
-    ("Scheme", "App::PropertyEnumeration", "Slicing", ["both", "u", "v"], "scheme",
-     "Both families, or one dominant direction"),
-    ("Size", "App::PropertyLength", "Slicing", 0.0, "size",
-     "Scale the source so its longest side is this long; 0 keeps its size"),
-    ("MinHingeLength", "App::PropertyLength", "Hinges", 4.0, "min_hinge_length",
-     "A hinge must be this long to carry load"),
-    ("MinSlotEdgeDistance", "App::PropertyLength", "Hinges", 2.0, "min_slot_edge_distance",
-     "Paper to keep on each side of a slot"),
-    ("MaxSpacing", "App::PropertyLength", "Hinges", 0.0, "max_spacing",
-     "Add patches in long cylinders so none is farther apart; 0 is off"),
-    ("MinSpacing", "App::PropertyLength", "Hinges", 0.0, "min_spacing",
-     "Least distance between two patches of one family that overlap seen along their normal, "
-     "so paper is left between their slots; 0 is slot width + MinSlotEdgeDistance"),
-    ("TimeLimit", "App::PropertyFloat", "Slicing", 60.0, "time_limit",
-     "Seconds the design may take before its searches stop with the best found; 0 is no limit"),
-    ("Thickness", "App::PropertyLength", "Material", 0.3, "thickness",
-     "Material thickness (0.3 mm card, 3 mm plywood)"),
-    ("Clearance", "App::PropertyLength", "Material", 0.2, "clearance", "Added to the thickness for the slot width"),
-    ("Kerf", "App::PropertyLength", "Material", 0.0, "kerf",
-     "Width the cutter removes; cut paths are moved out by half"),
-    ("SlotEnd", "App::PropertyEnumeration", "Material", ["square", "round"], "slot_end", "Closed slot ends"),
-    ("USlots", "App::PropertyEnumeration", "Material", ["up", "down"], "u_slots",
-     "Which way U-patches are slotted first (V the other way)"),
-    ("SheetSize", "App::PropertyEnumeration", "Sheets", ["A4", "A3", "Letter", "Custom"], "sheet",
-     "Sheet size for the layout; Custom uses SheetWidth x SheetHeight"),
-    ("SheetWidth", "App::PropertyLength", "Sheets", 600.0, None, "Custom sheet width"),
-    ("SheetHeight", "App::PropertyLength", "Sheets", 400.0, None, "Custom sheet height"),
-    ("Margin", "App::PropertyLength", "Sheets", 10.0, "margin", "Kept clear along every sheet edge"),
-    ("Spacing", "App::PropertyLength", "Sheets", 3.0, "spacing", "Between patches on a sheet"),
-    ("Rotate", "App::PropertyBool", "Sheets", True, "rotate", "Patches may be turned by quarters to nest better"),
+_table = []
+
+
+def schema():
+    """The core's schema, one dict per parameter (loaded with the compiled core)."""
+    from sliceform_app import native
+
+    return native().parameter_schema()
+
+
+def spec(key):
+    """The schema's entry for a core key ("thickness")."""
+    for s in schema():
+        if s["key"] == key:
+            return s
+    raise KeyError(key)
+
+
+def freecad_type(s):
+    """The property type for a schema entry: lengths and angles keep their units; counts and
+    unitless numbers carry the schema's range as a constraint."""
+    if s["kind"] == "real":
+        return {"mm": "App::PropertyLength", "deg": "App::PropertyAngle"}.get(s["unit"], "App::PropertyFloatConstraint")
+    return {
+        "integer": "App::PropertyIntegerConstraint",
+        "bool": "App::PropertyBool",
+        "choice": "App::PropertyEnumeration",
+        "direction": "App::PropertyVector",
+    }[s["kind"]]
+
+
+# FreeCAD's own: (property, type, group, default, tooltip), after SheetSize.
+_SHEET = (
+    ("SheetWidth", "App::PropertyLength", "Sheets", 600.0, "Custom sheet width"),
+    ("SheetHeight", "App::PropertyLength", "Sheets", 400.0, "Custom sheet height"),
 )
+# Defaults FreeCAD sets apart from the schema's (see the module's doc).
+FREECAD_DEFAULTS = {"Size": 0.0}
+# Properties made elsewhere (the feature's own group).
+_ELSEWHERE = ("FoldAngle",)
+
+
+def table():
+    """(property, FreeCAD type, group, default, core key, tooltip) per parameter, in the
+    schema's order. Enumerations have their choices as default (the first is selected);
+    constraint types have (default, min, max, step)."""
+    if _table:
+        return _table
+    rows = []
+    for s in schema():
+        name = s["property"]
+        if not name or name in _ELSEWHERE:
+            continue
+        kind = freecad_type(s)
+        default = FREECAD_DEFAULTS.get(name, s["default"])
+        if kind == "App::PropertyEnumeration":
+            default = list(s["choices"]) + (["Custom"] if name == "SheetSize" else [])
+        elif kind == "App::PropertyIntegerConstraint":
+            default = (int(default), int(s["min"]), int(s["max"]), int(s["step"]))
+        elif kind == "App::PropertyFloatConstraint":
+            default = (float(default), float(s["min"]), float(s["max"]), float(s["step"]))
+        rows.append((name, kind, s["group"], default, s["key"], s["help"]))
+        if name == "SheetSize":
+            rows += [(n, k, g, d, None, tip) for n, k, g, d, tip in _SHEET]
+    _table[:] = rows
+    return _table
+
 
 # Read-only results: (property, type, tooltip)
 RESULTS = (
@@ -74,7 +95,7 @@ RESULTS = (
 def core_params(obj):
     """The core's parameter dict from the feature's properties."""
     params = {}
-    for name, kind, _group, _default, key, _tip in PARAMETERS:
+    for name, kind, _group, _default, key, _tip in table():
         if key is None:
             continue
         value = getattr(obj, name)
@@ -88,13 +109,13 @@ def core_params(obj):
     return params
 
 
-# Options of the command line that have no property of their own, by what they are here.
-_OPTION_PROPERTIES = {"sheet": "SheetSize", "u": "UDirection", "v": "VDirection", "no-rotate": "Rotate"}
+# Options of the command line that FreeCAD sets another way (none today).
+_OPTION_PROPERTIES = {}
 
 
 def option_properties():
     """CLI option (without --) -> property name, from the table."""
-    out = {key.replace("_", "-"): name for name, _kind, _group, _default, key, _tip in PARAMETERS if key}
+    out = {s["option"][2:]: s["property"] for s in schema() if s["option"] and s["property"]}
     out.update(_OPTION_PROPERTIES)
     return out
 

@@ -13,21 +13,29 @@ translate = FreeCAD.Qt.translate
 
 
 # (property, label, minimum, maximum, step, decimals) for the spin boxes
-NUMBERS = (
-    ("Slices", QT_TRANSLATE_NOOP("Sliceform", "Slices per direction"), 4, 2048, 8, 0),
-    ("Size", QT_TRANSLATE_NOOP("Sliceform", "Size: longest side (mm, 0 keeps the source's)"), 0, 100000, 10, 1),
-    ("Thickness", QT_TRANSLATE_NOOP("Sliceform", "Material thickness (mm)"), 0.05, 20, 0.05, 2),
-    ("Clearance", QT_TRANSLATE_NOOP("Sliceform", "Slot clearance (mm)"), 0, 5, 0.05, 2),
-    ("Kerf", QT_TRANSLATE_NOOP("Sliceform", "Cutter kerf (mm)"), 0, 2, 0.01, 2),
-    ("MinHingeLength", QT_TRANSLATE_NOOP("Sliceform", "Shortest hinge (mm)"), 0.5, 100, 0.5, 1),
-    ("MinSlotEdgeDistance", QT_TRANSLATE_NOOP("Sliceform", "Paper beside a slot (mm)"), 0.2, 50, 0.5, 1),
-    ("TauA", QT_TRANSLATE_NOOP("Sliceform", "Cylinder error budget (tauA)"), 0.001, 1, 0.01, 3),
-    ("Margin", QT_TRANSLATE_NOOP("Sliceform", "Sheet margin (mm)"), 0, 100, 1, 1),
-    ("Spacing", QT_TRANSLATE_NOOP("Sliceform", "Space between patches (mm)"), 0, 100, 1, 1),
-    ("SheetWidth", QT_TRANSLATE_NOOP("Sliceform", "Custom sheet width (mm)"), 10, 10000, 10, 1),
-    ("SheetHeight", QT_TRANSLATE_NOOP("Sliceform", "Custom sheet height (mm)"), 10, 10000, 10, 1),
-    ("FoldAngle", QT_TRANSLATE_NOOP("Sliceform", "Fold angle (degrees)"), 1, 90, 5, 0),
-)
+# The numbers the panel shows, by property, in this order: label, range, step and unit come
+# from the core's parameter schema (the custom sheet's size is FreeCAD's own).
+NUMBERS = ("Slices", "Size", "Thickness", "Clearance", "Kerf", "MinHingeLength", "MinSlotEdgeDistance", "TauA",
+           "Margin", "Spacing", "SheetWidth", "SheetHeight", "FoldAngle")
+_SHEET_ROW = {"label": "Custom sheet", "min": 10.0, "max": 10000.0, "step": 10.0, "unit": "mm", "kind": "real"}
+_SUFFIX = {"mm": " mm", "s": " s", "deg": "\u00b0"}
+
+
+def number_rows():
+    """(property, label, low, high, step, decimals, suffix) per row, from the schema."""
+    from sliceform_app import parameters
+
+    by_property = {s["property"]: s for s in parameters.schema() if s["property"]}
+    rows = []
+    for name in NUMBERS:
+        s = by_property.get(name) or dict(_SHEET_ROW, label="{} {}".format(
+            _SHEET_ROW["label"], "width" if name == "SheetWidth" else "height"))
+        text = repr(float(s["step"]))
+        decimals = 0 if s["kind"] == "integer" else max(1, len(text.split(".")[1].rstrip("0")))
+        rows.append((name, s["label"], s["min"], s["max"], s["step"], decimals, _SUFFIX.get(s["unit"], "")))
+    return rows
+
+
 CHOICES = (
     ("Scheme", QT_TRANSLATE_NOOP("Sliceform", "Scheme")),
     ("SheetSize", QT_TRANSLATE_NOOP("Sliceform", "Sheet")),
@@ -48,16 +56,24 @@ class SliceformTaskPanel:
         self.form = QtGui.QWidget()
         self.form.setWindowTitle("Sliceform")
         layout = QtGui.QFormLayout(self.form)
+        # In FreeCAD's narrow Combo View a row whose label and field do not fit side by side
+        # gets its field under the label, rather than the field clipped at the edge.
+        layout.setRowWrapPolicy(QtGui.QFormLayout.WrapLongRows)
+        layout.setFieldGrowthPolicy(QtGui.QFormLayout.AllNonFixedFieldsGrow)
         self.numbers = {}
-        for name, label, low, high, step, decimals in NUMBERS:
-            box = QtGui.QSpinBox() if decimals == 0 else QtGui.QDoubleSpinBox()
-            if decimals:
+        for name, label, low, high, step, decimals, suffix in number_rows():
+            if decimals == 0:
+                box = QtGui.QSpinBox()
+                low, high, step = int(low), int(high), int(step)
+            else:
+                box = QtGui.QDoubleSpinBox()
                 box.setDecimals(decimals)
             box.setRange(low, high)
             box.setSingleStep(step)
+            box.setSuffix(suffix)
             box.setValue(int(_value(obj, name)) if decimals == 0 else _value(obj, name))
             box.setToolTip(obj.getDocumentationOfProperty(name))
-            layout.addRow(translate("Sliceform", label), box)
+            layout.addRow(label, box)
             self.numbers[name] = box
         self.choices = {}
         for name, label in CHOICES:

@@ -172,6 +172,7 @@ class TestSlicingInFreeCAD(unittest.TestCase):
 # The feature's tests live in their own file; importing the class runs them here too.
 from TestSliceformFeature import TestSliceformFeature  # noqa: E402,F401
 from TestSliceformChildren import TestSliceformChildren  # noqa: E402,F401
+from TestSliceformSchema import TestSliceformSchema  # noqa: E402,F401
 
 
 class TestDirectionsInTheBinding(unittest.TestCase):

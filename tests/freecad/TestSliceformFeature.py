@@ -236,7 +236,6 @@ class TestSliceformFeature(unittest.TestCase):
             ("a face", lambda: self._part(Part.makePlane(50, 50)), {}, "no closed solid"),
             ("an open shell", lambda: self._part(Part.Shell(Part.makeBox(20, 20, 20).Faces[1:])), {}, "no closed solid"),
             ("thickness 0", lambda: self._part(Part.makeSphere(40)), {"Thickness": 0}, "thickness must be > 0"),
-            ("one slice", lambda: self._part(Part.makeSphere(40)), {"Slices": 1}, "slices must be between"),
             ("custom sheet too small", lambda: self._part(Part.makeSphere(40)),
              {"SheetSize": "Custom", "SheetWidth": 40, "SheetHeight": 40}, "does not fit a 40x40 sheet"),
         ]

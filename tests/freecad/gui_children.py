@@ -147,7 +147,18 @@ try:
     FreeCADGui.runCommand("Sliceform_Edit")
     FreeCADGui.updateGui()
     fields, recompute, cancel = task_panel_widgets()
-    fields["Slices per direction"].setValue(48)
+    # The rows come from the core's parameter schema, with their units.
+    assert fields["Thickness"].suffix() == " mm" and fields["Slices"].maximum() == 4096, fields
+    # Nothing clipped in the narrow Combo View: every field ends inside the task view.
+    area = fields["Thickness"]
+    while area is not None and not isinstance(area, QtGui.QScrollArea):
+        area = area.parentWidget()
+    edge = area.viewport().mapToGlobal(area.viewport().rect().topRight()).x()
+    clipped = [n for n, w in fields.items() if w.mapToGlobal(w.rect().topRight()).x() > edge]
+    assert not clipped, "fields clipped at the Combo View's edge: {}".format(clipped)
+    if png:
+        FreeCADGui.getMainWindow().grab().save(png.replace(".png", "_panel.png"))
+    fields["Slices"].setValue(48)
     sheet = fields["Sheet"]
     sheet.setCurrentIndex(sheet.findText("A3"))
     recompute.click()
@@ -168,7 +179,7 @@ try:
     FreeCADGui.runCommand("Sliceform_Edit")
     FreeCADGui.updateGui()
     fields, recompute, _cancel = task_panel_widgets()
-    fields["Slices per direction"].setValue(48)
+    fields["Slices"].setValue(48)
     fields["Sheet"].setCurrentIndex(fields["Sheet"].findText("A3"))
     recompute.click()
     ok = [b for b in FreeCADGui.getMainWindow().findChildren(QtGui.QDialogButtonBox) if b.isVisible() and

@@ -5,4 +5,6 @@
 set -euo pipefail
 source "$(dirname "$0")/throwaway_home.sh" "$1"
 # -t before -M: the test module lives in this folder, added as a module path.
+# The schema test holds the CLI's --help against the parameter schema.
+export SLICEFORM_CLI="$build/App/cli/sliceform"
 freecadcmd -t TestSliceform -M "$here"

@@ -1,0 +1,127 @@
+# SPDX-License-Identifier: LGPL-2.1-or-later
+"""One parameter schema, owned by the core (issue 16): the feature's properties (names,
+groups, tooltips, defaults, choices, ranges), the CLI's `design --help` (options, help text,
+defaults) and the preferences page (defaults within the ranges) all say what
+sliceform_native.parameter_schema() says. Run through TestSliceform (tests/freecad/run.sh)."""
+import os
+import re
+import subprocess
+import unittest
+import xml.etree.ElementTree as ET
+
+import FreeCAD
+
+
+def _squash(text):
+    return " ".join(text.split())
+
+
+class TestSliceformSchema(unittest.TestCase):
+    def setUp(self):
+        from sliceform_app import parameters
+
+        self.schema = parameters.schema()
+        self.doc = FreeCAD.newDocument("SliceformSchema")
+
+    def tearDown(self):
+        FreeCAD.closeDocument(self.doc.Name)
+
+    def test_schema_is_complete(self):
+        keys = [s["key"] for s in self.schema]
+        self.assertEqual(len(keys), len(set(keys)))
+        for s in self.schema:
+            self.assertIn(s["kind"], ("real", "integer", "bool", "choice", "direction"), s["key"])
+            self.assertTrue(s["help"] and s["label"] and s["group"], s["key"])
+            if s["kind"] in ("real", "integer"):
+                self.assertLessEqual(s["min"], s["default"], s["key"])
+                self.assertLessEqual(s["default"], s["max"], s["key"])
+                self.assertGreater(s["step"], 0, s["key"])
+            if s["kind"] == "choice":
+                self.assertEqual(s["default"], s["choices"][0], s["key"])
+
+    def test_properties_are_made_from_the_schema(self):
+        from sliceform_app import feature, parameters
+
+        obj = self.doc.addObject("Part::FeaturePython", "Sliceform")
+        feature.Sliceform(obj)
+        for s in self.schema:
+            name = s["property"]
+            if not name:
+                continue
+            self.assertIn(name, obj.PropertiesList, s["key"])
+            self.assertEqual(obj.getDocumentationOfProperty(name), s["help"], name)
+            self.assertEqual(obj.getTypeIdOfProperty(name), parameters.freecad_type(s), name)
+            if name != "FoldAngle":
+                self.assertEqual(obj.getGroupOfProperty(name), s["group"], name)
+            value = getattr(obj, name)
+            value = value.Value if hasattr(value, "Value") else value
+            if s["kind"] == "choice":
+                extra = ["Custom"] if name == "SheetSize" else []
+                self.assertEqual(obj.getEnumerationsOfProperty(name), s["choices"] + extra, name)
+                self.assertEqual(value, s["default"], name)
+            elif s["kind"] == "direction":
+                self.assertEqual((value.x, value.y, value.z), tuple(s["default"]), name)
+            else:
+                self.assertAlmostEqual(float(value), float(parameters.FREECAD_DEFAULTS.get(name, s["default"])),
+                                       msg=name)
+        # A constrained property holds the schema's range: the core's limits.
+        obj.Slices = 100000
+        self.assertEqual(obj.Slices, parameters.spec("slices")["max"])
+        obj.Slices = 1  # the core would refuse it: "the number of slices must be between 2 and 4096"
+        self.assertEqual(obj.Slices, parameters.spec("slices")["min"])
+        obj.TauA = -1.0
+        self.assertEqual(obj.TauA, parameters.spec("tau_a")["min"])
+        # Every parameter the feature hands the core is in the schema.
+        obj.Source = self.doc.addObject("Part::Box", "Box")
+        keys = set(parameters.core_params(obj))
+        self.assertEqual(keys - {s["key"] for s in self.schema}, set())
+        self.assertEqual({s["key"] for s in self.schema if s["property"] and s["property"] != "FoldAngle"}, keys)
+
+    def test_cli_help_says_what_the_schema_says(self):
+        cli = os.environ.get("SLICEFORM_CLI")
+        if not cli or not os.path.exists(cli):
+            self.fail("SLICEFORM_CLI is not set to the built sliceform program (tests/freecad/run.sh sets it)")
+        text = subprocess.run([cli, "design", "--help"], capture_output=True, text=True, check=True).stdout
+        squashed = _squash(text)
+        for s in self.schema:
+            if not s["option"]:
+                continue
+            match = re.search(r"^\s+(?:-\w,)?{}\b(.*)$".format(re.escape(s["option"])), text, re.M)
+            self.assertIsNotNone(match, s["option"])
+            self.assertIn(_squash(s["help"]), squashed, s["option"])
+            shown = re.match(r"\s*(?:FLOAT|INT|TEXT[^=]*)=(\S+)", match.group(1))
+            if s["kind"] in ("real", "integer"):
+                self.assertIsNotNone(shown, s["option"])
+                self.assertAlmostEqual(float(shown.group(1)), float(s["default"]), msg=s["option"])
+            elif s["kind"] == "choice":
+                self.assertEqual(shown.group(1), s["default"], s["option"])
+                if s["key"] != "sheet":  # WxH too
+                    self.assertIn("{" + ",".join(s["choices"]) + "}", match.group(1), s["option"])
+
+    def test_preferences_page_agrees_with_the_schema(self):
+        from sliceform_app import ADDON_DIR, feature
+
+        path = os.path.join(ADDON_DIR, "Resources", "ui", "preferences.ui")
+        by_property = {s["property"]: s for s in self.schema if s["property"]}
+        widgets = ET.parse(path).getroot().iter("widget")
+        checked = 0
+        for w in widgets:
+            entry = w.find("property[@name='prefEntry']/cstring")
+            if entry is None or entry.text not in by_property:
+                continue
+            s = by_property[entry.text]
+            props = {p.get("name"): p[0].text for p in w.findall("property") if len(p)}
+            if s["kind"] in ("real", "integer"):
+                self.assertAlmostEqual(float(props["value"]), float(s["default"]), msg=entry.text)
+                self.assertGreaterEqual(float(props["minimum"]), s["min"], entry.text)
+                self.assertLessEqual(float(props["maximum"]), s["max"], entry.text)
+            else:
+                items = [i.find("property/string").text for i in w.findall("item")]
+                self.assertEqual(items, s["choices"], entry.text)
+            checked += 1
+        self.assertGreaterEqual(checked, 7)
+        self.assertTrue(all(name in by_property for name in feature.PREFERRED))
+
+
+if __name__ == "__main__":
+    unittest.main()
