@@ -5,6 +5,8 @@ change the document run inside a transaction, so Undo takes them back in one ste
 import FreeCAD
 import FreeCADGui
 
+from PySide.QtCore import QT_TRANSLATE_NOOP
+
 from sliceform_gui import icon_path
 
 
@@ -14,6 +16,21 @@ def _selected_solid():
             if not _is_sliceform(obj):
                 return obj
     return None
+
+
+def _may_hold_a_solid(obj):
+    """What IsActive asks, every time the GUI polls the commands: the object's type only.
+    Whether it really holds a solid (its shape's solids, a mesh's closedness) is asked when
+    the command runs, which says so if not."""
+    return (obj.isDerivedFrom("Part::Feature") or obj.isDerivedFrom("Mesh::Feature")) and not _is_sliceform(obj)
+
+
+def _solid_for_command():
+    """The selected solid or mesh; None, with a message, when the selection holds none."""
+    obj = _selected_solid()
+    if obj is None:
+        _error(FreeCAD.Qt.translate("Sliceform", "select a solid, a PartDesign body or a closed mesh first"))
+    return obj
 
 
 def _is_sliceform(obj):
@@ -39,19 +56,22 @@ class SlicesCommand:
     def GetResources(self):
         return {
             "Pixmap": icon_path("Sliceform_Slices.svg"),
-            "MenuText": "Slices",
-            "ToolTip": "Cut the selected solid or closed mesh into 16 sections along X and 16 "
-            "along Y and add them as one compound (exact curves for CAD solids)",
+            "MenuText": QT_TRANSLATE_NOOP("Sliceform_Slices", "Slices"),
+            "ToolTip": QT_TRANSLATE_NOOP("Sliceform_Slices", "Cut the selected solid or closed mesh into 16 sections along X and 16 "
+                "along Y and add them as one compound (exact curves for CAD solids)"),
         }
 
     def IsActive(self):
-        return FreeCAD.ActiveDocument is not None and _selected_solid() is not None
+        return FreeCAD.ActiveDocument is not None and any(
+            _may_hold_a_solid(o) for o in FreeCADGui.Selection.getSelection())
 
     def Activated(self):
         from sliceform_app import slices
 
         doc = FreeCAD.ActiveDocument
-        obj = _selected_solid()
+        obj = _solid_for_command()
+        if obj is None:
+            return
         doc.openTransaction("Sliceform slices")
         try:
             slices.make_slices(doc, obj)
@@ -69,20 +89,27 @@ class CreateCommand:
     def GetResources(self):
         return {
             "Pixmap": icon_path("Sliceform_Create.svg"),
-            "MenuText": "Create sliceform",
-            "ToolTip": "Design a paper sliceform of the selected solid, PartDesign body or closed "
-            "mesh: slotted patches, a sketch per patch and a TechDraw page per sheet. "
-            "It follows the source when the source changes.",
+            "MenuText": QT_TRANSLATE_NOOP("Sliceform_Create", "Create sliceform"),
+            "Accel": "S, C",
+            "ToolTip": QT_TRANSLATE_NOOP(
+                "Sliceform_Create",
+                "Design a paper sliceform of the selected solid, PartDesign body or closed mesh: "
+                "slotted patches, each on its plane and on its sheet, and a TechDraw page per "
+                "sheet. It follows the source when the source changes.",
+            ),
         }
 
     def IsActive(self):
-        return FreeCAD.ActiveDocument is not None and _selected_solid() is not None
+        return FreeCAD.ActiveDocument is not None and any(
+            _may_hold_a_solid(o) for o in FreeCADGui.Selection.getSelection())
 
     def Activated(self):
         from sliceform_app import feature
 
         doc = FreeCAD.ActiveDocument
-        source = _selected_solid()
+        source = _solid_for_command()
+        if source is None:
+            return
         doc.openTransaction("Create sliceform")
         # A feature made here chooses its slicing directions for the model (unless the
         # preference Directions says "given"); made from Python (makeSliceform) it keeps the
@@ -116,9 +143,9 @@ class EditCommand:
     def GetResources(self):
         return {
             "Pixmap": icon_path("Sliceform_Edit.svg"),
-            "MenuText": "Edit sliceform",
-            "ToolTip": "Change the selected sliceform's parameters in the task panel, recompute "
-            "and see the results (stability, interlocks, slot distances, sheets)",
+            "MenuText": QT_TRANSLATE_NOOP("Sliceform_Edit", "Edit sliceform"),
+            "ToolTip": QT_TRANSLATE_NOOP("Sliceform_Edit", "Change the selected sliceform's parameters in the task panel, recompute "
+                "and see the results (stability, interlocks, slot distances, sheets)"),
         }
 
     def IsActive(self):
@@ -134,10 +161,11 @@ class ExportCommand:
     def GetResources(self):
         return {
             "Pixmap": icon_path("Sliceform_Export.svg"),
-            "MenuText": "Export layout",
-            "ToolTip": "Write the selected sliceform's sheets into a folder: DXF per sheet for "
-            "laser cutters (layers CUT and ENGRAVE, mm), SVG per sheet, a PDF to print at "
-            "100 %, PNG previews, STEP/glTF of the assembly and report.json",
+            "MenuText": QT_TRANSLATE_NOOP("Sliceform_Export", "Export layout"),
+            "Accel": "S, E",
+            "ToolTip": QT_TRANSLATE_NOOP("Sliceform_Export", "Write the selected sliceform's sheets into a folder: DXF per sheet for "
+                "laser cutters (layers CUT and ENGRAVE, mm), SVG per sheet, a PDF to print at "
+                "100 %, PNG previews, STEP/glTF of the assembly and report.json"),
         }
 
     def IsActive(self):
@@ -174,10 +202,10 @@ class FoldCommand:
     def GetResources(self):
         return {
             "Pixmap": icon_path("Sliceform_Fold.svg"),
-            "MenuText": "Fold animation",
-            "ToolTip": "Animate the selected sliceform folding flat and popping up again "
-            "(FoldAngle 90 to 10 degrees and back in 2 s; the angle is restored after). "
-            "Run it again to stop.",
+            "MenuText": QT_TRANSLATE_NOOP("Sliceform_Fold", "Fold animation"),
+            "ToolTip": QT_TRANSLATE_NOOP("Sliceform_Fold", "Animate the selected sliceform folding flat and popping up again "
+                "(FoldAngle 90 to 10 degrees and back in 2 s; the angle is restored after). "
+                "Run it again to stop."),
         }
 
     def IsActive(self):
@@ -232,9 +260,9 @@ class ReportCommand:
     def GetResources(self):
         return {
             "Pixmap": icon_path("Sliceform_Report.svg"),
-            "MenuText": "Show report",
-            "ToolTip": "Show the selected sliceform's checks: stability certificate, interlocks, "
-            "split patches, slot-to-edge distance, hinge lengths, quality, sheets; save report.json",
+            "MenuText": QT_TRANSLATE_NOOP("Sliceform_Report", "Show report"),
+            "ToolTip": QT_TRANSLATE_NOOP("Sliceform_Report", "Show the selected sliceform's checks: stability certificate, interlocks, "
+                "split patches, slot-to-edge distance, hinge lengths, quality, sheets; save report.json"),
         }
 
     def IsActive(self):

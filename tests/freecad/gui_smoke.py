@@ -21,6 +21,33 @@ try:
     for name in ("Sliceform_Create", "Sliceform_Edit", "Sliceform_Export", "Sliceform_Fold", "Sliceform_Report",
                  "Sliceform_AssemblySteps"):
         assert name in FreeCADGui.listCommands(), name + " not registered"
+    # Create and Export have keyboard shortcuts (S, C and S, E).
+    from sliceform_gui import commands
+
+    for name, keys in (("Sliceform_Create", "S, C"), ("Sliceform_Export", "S, E")):
+        shortcut = FreeCADGui.Command.get(name).getShortcut()
+        assert shortcut == keys, (name, shortcut)
+    # IsActive, asked at every poll of the GUI, looks at the selection's types only: a
+    # selected face (no solid) makes Create active, and Create then refuses it with a line.
+    flat_doc = FreeCAD.newDocument("Flat")
+    flat = flat_doc.addObject("Part::Feature", "Flat")
+    import Part
+
+    flat.Shape = Part.makePlane(10, 10)
+    FreeCADGui.Selection.clearSelection()
+    FreeCADGui.Selection.addSelection(flat)
+    looked = []
+    selected_solid = commands._selected_solid
+    commands._selected_solid = lambda: looked.append(1) or selected_solid()
+    try:
+        create = commands.COMMANDS_MADE[list(commands.COMMANDS).index("Sliceform_Create")]
+        assert create.IsActive() and not looked, "IsActive looked at the shapes"
+        FreeCADGui.runCommand("Sliceform_Create")
+        assert looked, "Create did not check the selection"
+    finally:
+        commands._selected_solid = selected_solid
+    assert [o.Name for o in flat_doc.Objects] == ["Flat"] and not flat_doc.UndoNames, flat_doc.UndoNames
+    FreeCAD.closeDocument(flat_doc.Name)
     # Small designs keep the test quick: the preferences page's default for new sliceforms.
     FreeCAD.ParamGet("User parameter:BaseApp/Preferences/Mod/Sliceform").SetInt("Slices", 32)
 
