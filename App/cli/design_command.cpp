@@ -240,6 +240,7 @@ void runDesign(DesignOptions o) {
       given = std::move(turned);
       choice = std::move(other);
       choice.why = "the file's axes gave no buildable design; " + choice.why;
+      given->directions.why = choice.why;  // report.json's copy
     } else {
       bar.clear();
       std::printf("directions no other frame tried gives a buildable design either: the file's axes kept\n");

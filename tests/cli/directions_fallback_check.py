@@ -37,6 +37,7 @@ def main():
         timings = json.load(open(out + "/timings.json"))
     d = report["directions"]
     assert d["mode"] == "auto" and d["frames"][d["chosen"]]["design"]["buildable"], d
+    assert d["why"].startswith("the file's axes gave no buildable design; "), d["why"]
     assert report["verdict"]["buildable"], report["verdict"]
     chosen = d["frames"][d["chosen"]]
     p = report["parameters"]
