@@ -466,7 +466,9 @@ def shown(sliceform):
         views = [] if sheet_patch is None else [o for o in sheet_patch.InList if o.TypeId == "TechDraw::DrawViewPart"]
         sheets.append(page_of_view.get(views[0].Name, -1) if len(views) == 1 else -2)
         centres.append((round(views[0].X.Value, 6), round(views[0].Y.Value, 6)) if views else None)
-    engraved = {e.SheetIndex for e in engravings_of(sliceform) if len(views_of(e)) == 1}
+    # An engraving counts when its one view is the last on its page (drawn on top).
+    last = {p.SheetIndex: p.Views[-1] for p in pages if p.Views}
+    engraved = {e.SheetIndex for e in engravings_of(sliceform) if views_of(e) == [last.get(e.SheetIndex)]}
     pages = [(p.Label, getattr(p, "Sheet", ""), p.SheetIndex in engraved) for p in pages]
     return ids, sheets, pages, centres
 
@@ -518,6 +520,21 @@ def sync(sliceform, recompute=True):
             page.Template.Template = template_for(sheets)
             page.Sheet = _sheet_text(sheets)
 
+    views = []
+    for patch, patch_id, s in zip(patches, ids, sheet_index):
+        sheet_patch = sheet_patch_of(patch) or _new_sheet_patch(doc, patch)
+        found = [o for o in sheet_patch.InList if o.TypeId == "TechDraw::DrawViewPart"]
+        for view in found[1:]:
+            remove_objects(doc, [view])
+        view = found[0] if found else _new_view(doc, pages[s], sheet_patch, patch.Name + "_View")
+        owner = [p for p in pages if view in p.Views]
+        if owner != [pages[s]]:
+            for page in owner:
+                page.removeView(view)
+            pages[s].addView(view)
+        if (round(view.X.Value, 6), round(view.Y.Value, 6)) != (round(sheets["width"] / 2, 6), round(sheets["height"] / 2, 6)):
+            view.X, view.Y = sheets["width"] / 2, sheets["height"] / 2
+        views.append((patch, sheet_patch, view))
     # An engraving per page (documents made before engravings get theirs here).
     engravings = engravings_of(sliceform)
     for engraving in engravings:
@@ -536,27 +553,15 @@ def sync(sliceform, recompute=True):
                 sliceform.Name, page.SheetIndex + 1))
         if (round(view.X.Value, 6), round(view.Y.Value, 6)) != (round(sheets["width"] / 2, 6), round(sheets["height"] / 2, 6)):
             view.X, view.Y = sheets["width"] / 2, sheets["height"] / 2
-        if view.Label != "engraving":
-            view.Label = "engraving"
+        # Last on its page: a page draws its views in this order, and each patch view's
+        # white face would hide the labels of an engraving drawn before it.
+        if page.Views[-1] != view:
+            page.removeView(view)
+            page.addView(view)
         engraved += [engraving, view]
 
     # Labels go through a temporary name first: FreeCAD keeps labels unique, and a label
     # taken by a sibling for a moment would come out renumbered ("U002" for U1).
-    views = []
-    for patch, patch_id, s in zip(patches, ids, sheet_index):
-        sheet_patch = sheet_patch_of(patch) or _new_sheet_patch(doc, patch)
-        found = [o for o in sheet_patch.InList if o.TypeId == "TechDraw::DrawViewPart"]
-        for view in found[1:]:
-            remove_objects(doc, [view])
-        view = found[0] if found else _new_view(doc, pages[s], sheet_patch, patch.Name + "_View")
-        owner = [p for p in pages if view in p.Views]
-        if owner != [pages[s]]:
-            for page in owner:
-                page.removeView(view)
-            pages[s].addView(view)
-        if (round(view.X.Value, 6), round(view.Y.Value, 6)) != (round(sheets["width"] / 2, 6), round(sheets["height"] / 2, 6)):
-            view.X, view.Y = sheets["width"] / 2, sheets["height"] / 2
-        views.append((patch, sheet_patch, view))
     labels = []
     for (patch, sheet_patch, view), patch_id, s in zip(views, ids, sheet_index):
         if patch.PatchId != patch_id:
@@ -567,6 +572,7 @@ def sync(sliceform, recompute=True):
             (view, patch_id),
         ]
     labels += [(e, "{} engraving {}".format(sliceform.Label, e.SheetIndex + 1)) for e in engraved[::2]]
+    labels += [(v, "engraving {}".format(e.SheetIndex + 1)) for e, v in zip(engraved[::2], engraved[1::2])]
     labels = [(obj, label) for obj, label in labels if obj.Label != label]
     for obj, _label in labels:
         obj.Label = obj.Name + "_"

@@ -70,6 +70,8 @@ class TestSliceformChildren(unittest.TestCase):
         self.assertEqual(len(pages), sliceform.SheetCount)
         self.assertEqual(sum(len(children.patch_views(p)) for p in pages), sliceform.PatchCount)
         self.assertEqual([len(children.views_of(e)) for e in children.engravings_of(sliceform)], [1] * len(pages))
+        # Drawn last on its page, so the patch views' white faces do not hide the labels.
+        self.assertEqual([p.Views[-1] for p in pages], [children.views_of(e)[0] for e in children.engravings_of(sliceform)])
         self.assertEqual([e.SheetIndex for e in children.engravings_of(sliceform)], list(range(len(pages))))
         report = json.loads(sliceform.Proxy.report_json(sliceform))
         self.assertEqual([p.PatchId for p in patches], [f["id"] for f in sliceform.Proxy.flat_patches(sliceform)])
