@@ -265,11 +265,20 @@ void bindDesign(py::module_& m) {
           d["kind"] = kinds[static_cast<int>(s.kind)];
           d["unit"] = s.unit;
           switch (s.kind) {
-            case ParamKind::Integer: d["default"] = static_cast<long>(s.value); break;
-            case ParamKind::Bool: d["default"] = s.value != 0; break;
-            case ParamKind::Choice: d["default"] = s.choices.front(); break;
-            case ParamKind::Direction: d["default"] = py::tuple(py::cast(s.direction)); break;
-            default: d["default"] = s.value;
+            case ParamKind::Integer:
+              d["default"] = static_cast<long>(s.value);
+              break;
+            case ParamKind::Bool:
+              d["default"] = s.value != 0;
+              break;
+            case ParamKind::Choice:
+              d["default"] = s.choices.front();
+              break;
+            case ParamKind::Direction:
+              d["default"] = py::tuple(py::cast(s.direction));
+              break;
+            default:
+              d["default"] = s.value;
           }
           d["choices"] = s.choices;
           d["min"] = s.min, d["max"] = s.max, d["step"] = s.step;

@@ -37,7 +37,8 @@ Run addCouponCommand(CLI::App& app);
 // An option of the parameter schema: its name, help and (Choice) values from there, the
 // field's value shown as the default. `names` replaces the option's name ("-n,--slices").
 template <class T>
-CLI::Option* addParameter(CLI::App* command, const std::string& key, T& field, const std::string& names = "") {
+CLI::Option* addParameter(CLI::App* command, const std::string& key, T& field,
+                          const std::string& names = "") {
   const ParamSpec& s = parameterSpec(key);
   CLI::Option* option = command->add_option(names.empty() ? s.option : names, field, s.help);
   if (s.kind == ParamKind::Choice && key != "sheet") option->check(CLI::IsMember(s.choices));

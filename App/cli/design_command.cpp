@@ -221,11 +221,13 @@ void runDesign(DesignOptions o) {
   // The file's axes are no one's choice when none was given: where they give no design a
   // maker can build, other directions may (TR12J_OCC.stl: a patch in pieces at the file's
   // axes, buildable turned). The design in the best frame is kept only if it can be built.
-  const double firstMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - begun).count();
+  const double firstMs =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - begun).count();
   if (!refusal.empty() && mayTurn) {
     bar.clear();
-    std::printf("directions the file's axes give no buildable design (%s); trying others (--directions auto)\n",
-                refusal.c_str());
+    std::printf(
+        "directions the file's axes give no buildable design (%s); trying others (--directions auto)\n",
+        refusal.c_str());
     std::fflush(stdout);
     if (writer) writer->discard();
     DirectionChoice other;
@@ -236,7 +238,8 @@ void runDesign(DesignOptions o) {
       if (e.kind() != ErrorKind::Unbuildable && e.kind() != ErrorKind::BadInput) throw;
     }
     if (turned && designProblems(*turned).empty()) {
-      turned->timings.insert(turned->timings.begin(), {"directions (the file's axes, not buildable)", firstMs});
+      turned->timings.insert(turned->timings.begin(),
+                             {"directions (the file's axes, not buildable)", firstMs});
       given = std::move(turned);
       choice = std::move(other);
       choice.why = "the file's axes gave no buildable design; " + choice.why;

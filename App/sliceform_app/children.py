@@ -113,9 +113,25 @@ def owned_objects(sliceform):
 
 
 class _Child:
-    """What the children's proxies share: a Type, nothing saved but it."""
+    """What the children's proxies share: a Type, nothing saved but it, and their inputs as
+    read-only properties, (type, name, group, tooltip) each, added where missing."""
 
     Type = None
+    PROPERTIES = ()
+
+    def __init__(self, obj):
+        obj.Proxy = self
+        self.initProperties(obj)
+
+    def initProperties(self, obj):
+        have = obj.PropertiesList
+        for kind, name, group, tip in self.PROPERTIES:
+            if name not in have:
+                obj.addProperty(kind, name, group, tip)
+            obj.setEditorMode(name, 1)
+
+    def onDocumentRestored(self, obj):
+        self.initProperties(obj)
 
     def __getstate__(self):
         return {"Type": self.Type}
@@ -134,27 +150,11 @@ class Patch(_Child):
     """One patch of a sliceform: its exact outline (slots included) as a face on its plane."""
 
     Type = "SliceformPatch"
-
-    def __init__(self, obj):
-        obj.Proxy = self
-        self.initProperties(obj)
-
-    def initProperties(self, obj):
-        have = obj.PropertiesList
-        if "Sliceform" not in have:
-            obj.addProperty("App::PropertyLink", "Sliceform", "Patch",
-                            QT_TRANSLATE_NOOP("App::Property", "The sliceform this patch belongs to"))
-        if "Index" not in have:
-            obj.addProperty("App::PropertyInteger", "Index", "Patch",
-                            QT_TRANSLATE_NOOP("App::Property", "Position of the patch in the design"))
-        if "PatchId" not in have:
-            obj.addProperty("App::PropertyString", "PatchId", "Patch",
-                            QT_TRANSLATE_NOOP("App::Property", "The id engraved on the patch"))
-        for name in ("Sliceform", "Index", "PatchId"):
-            obj.setEditorMode(name, 1)
-
-    def onDocumentRestored(self, obj):
-        self.initProperties(obj)
+    PROPERTIES = (
+        ("App::PropertyLink", "Sliceform", "Patch", QT_TRANSLATE_NOOP("App::Property", "The sliceform this patch belongs to")),
+        ("App::PropertyInteger", "Index", "Patch", QT_TRANSLATE_NOOP("App::Property", "Position of the patch in the design")),
+        ("App::PropertyString", "PatchId", "Patch", QT_TRANSLATE_NOOP("App::Property", "The id engraved on the patch")),
+    )
 
     def execute(self, obj):
         if not is_sliceform(obj.Sliceform):
@@ -184,19 +184,9 @@ class SheetPatch(_Child):
     cut it out, in sheet millimetres, on the sheet's box (_on_sheet)."""
 
     Type = "SliceformSheetPatch"
-
-    def __init__(self, obj):
-        obj.Proxy = self
-        self.initProperties(obj)
-
-    def initProperties(self, obj):
-        if "Patch" not in obj.PropertiesList:
-            obj.addProperty("App::PropertyLink", "Patch", "Patch",
-                            QT_TRANSLATE_NOOP("App::Property", "The patch shown on its sheet"))
-        obj.setEditorMode("Patch", 1)
-
-    def onDocumentRestored(self, obj):
-        self.initProperties(obj)
+    PROPERTIES = (
+        ("App::PropertyLink", "Patch", "Patch", QT_TRANSLATE_NOOP("App::Property", "The patch shown on its sheet")),
+    )
 
     def execute(self, obj):
         patch = obj.Patch
@@ -219,24 +209,10 @@ class Engraving(_Child):
     on the sheet's box (_on_sheet), for a view of its own."""
 
     Type = "SliceformEngraving"
-
-    def __init__(self, obj):
-        obj.Proxy = self
-        self.initProperties(obj)
-
-    def initProperties(self, obj):
-        have = obj.PropertiesList
-        if "Sliceform" not in have:
-            obj.addProperty("App::PropertyLink", "Sliceform", "Engraving",
-                            QT_TRANSLATE_NOOP("App::Property", "The sliceform whose labels these are"))
-        if "SheetIndex" not in have:
-            obj.addProperty("App::PropertyInteger", "SheetIndex", "Engraving",
-                            QT_TRANSLATE_NOOP("App::Property", "Which sheet of the layout"))
-        for name in ("Sliceform", "SheetIndex"):
-            obj.setEditorMode(name, 1)
-
-    def onDocumentRestored(self, obj):
-        self.initProperties(obj)
+    PROPERTIES = (
+        ("App::PropertyLink", "Sliceform", "Engraving", QT_TRANSLATE_NOOP("App::Property", "The sliceform whose labels these are")),
+        ("App::PropertyInteger", "SheetIndex", "Engraving", QT_TRANSLATE_NOOP("App::Property", "Which sheet of the layout")),
+    )
 
     def execute(self, obj):
         sliceform = obj.Sliceform
@@ -331,6 +307,14 @@ def _new_engraving(doc, sliceform, page):
         obj.ViewObject.Visibility = False
     view = _new_view(doc, page, obj, "{}_Sheet{:02d}_Engrave".format(sliceform.Name, page.SheetIndex + 1))
     return obj, view
+
+
+def _centre(view, sheets):
+    """Puts the view at the sheet's centre (set only when it is not there: a set marks it
+    for recompute)."""
+    centre = (sheets["width"] / 2, sheets["height"] / 2)
+    if (round(view.X.Value, 6), round(view.Y.Value, 6)) != tuple(round(c, 6) for c in centre):
+        view.X, view.Y = centre
 
 
 def _new_view(doc, page, source, name):
@@ -532,8 +516,7 @@ def sync(sliceform, recompute=True):
             for page in owner:
                 page.removeView(view)
             pages[s].addView(view)
-        if (round(view.X.Value, 6), round(view.Y.Value, 6)) != (round(sheets["width"] / 2, 6), round(sheets["height"] / 2, 6)):
-            view.X, view.Y = sheets["width"] / 2, sheets["height"] / 2
+        _centre(view, sheets)
         views.append((patch, sheet_patch, view))
     # An engraving per page (documents made before engravings get theirs here).
     engravings = engravings_of(sliceform)
@@ -551,8 +534,7 @@ def sync(sliceform, recompute=True):
             remove_objects(doc, found[1:])
             view = found[0] if found else _new_view(doc, page, engraving, "{}_Sheet{:02d}_Engrave".format(
                 sliceform.Name, page.SheetIndex + 1))
-        if (round(view.X.Value, 6), round(view.Y.Value, 6)) != (round(sheets["width"] / 2, 6), round(sheets["height"] / 2, 6)):
-            view.X, view.Y = sheets["width"] / 2, sheets["height"] / 2
+        _centre(view, sheets)
         # Last on its page: a page draws its views in this order, and each patch view's
         # white face would hide the labels of an engraving drawn before it.
         if page.Views[-1] != view:

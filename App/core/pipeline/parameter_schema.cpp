@@ -41,29 +41,32 @@ std::vector<ParamSpec> make() {
   const DesignParams d{};
   const ArrangementParams& a = d.arrangement;
   std::vector<ParamSpec> out;
-  out.push_back(choice("directions", "--directions", "Directions", "Slicing", {"given", "auto"},
-                       "Directions",
-                       "given: slice along u and v; auto: try the model's principal axes and the file's axes, "
-                       "each up and the families turned about it, and keep the buildable frame that scores best "
-                       "(1.5-3 times the time of one design)"));
-  out.push_back(direction("u", "UDirection", {a.u.x, a.u.y, a.u.z}, "normal of the U family of patches, x,y,z"));
+  out.push_back(
+      choice("directions", "--directions", "Directions", "Slicing", {"given", "auto"}, "Directions",
+             "given: slice along u and v; auto: try the model's principal axes and the file's axes, "
+             "each up and the families turned about it, and keep the buildable frame that scores best "
+             "(1.5-3 times the time of one design)"));
+  out.push_back(
+      direction("u", "UDirection", {a.u.x, a.u.y, a.u.z}, "normal of the U family of patches, x,y,z"));
   out.push_back(direction("v", "VDirection", {a.v.x, a.v.y, a.v.z},
                           "normal of the V family, x,y,z, orthogonal to U (W = U x V is up)"));
   ParamSpec slices = real("slices", "--slices", "Slices", "Slicing", "", a.slices, 2, 4096, 8, "Slices",
                           "slices per direction");
   slices.kind = ParamKind::Integer;
   out.push_back(slices);
-  out.push_back(real("interval", "--interval", "Interval", "Slicing", "mm", a.interval, 0, 100000, 0.5, "Interval",
-                     "mm between slices; overrides slices (0: slices sets it)"));
+  out.push_back(real("interval", "--interval", "Interval", "Slicing", "mm", a.interval, 0, 100000, 0.5,
+                     "Interval", "mm between slices; overrides slices (0: slices sets it)"));
   out.push_back(real("tau_a", "--tau-a", "TauA", "Slicing", "", a.tauA, 0, 1, 0.01, "Cylinder error budget",
                      "cylinder error budget, relative to each part's volume (the paper's tauA)"));
-  out.push_back(real("tau_m", "--tau-m", "TauM", "Slicing", "", a.tauM, 0, 0.99, 0.01, "Branch merge threshold",
+  out.push_back(real("tau_m", "--tau-m", "TauM", "Slicing", "", a.tauM, 0, 0.99, 0.01,
+                     "Branch merge threshold",
                      "Reeb branch merge threshold, a weight ratio (the paper's tauM)"));
   out.push_back(choice("scheme", "--scheme", "Scheme", "Slicing", {"both", "u", "v"}, "Scheme",
                        "both families, or u / v for one dominant direction"));
-  out.push_back(real("size", "--size", "Size", "Slicing", "mm", 150, 0, 100000, 10, "Size",
-                     "scale the model so its longest side is this many mm (0: keep its size; mesh files carry "
-                     "no unit)"));
+  out.push_back(
+      real("size", "--size", "Size", "Slicing", "mm", 150, 0, 100000, 10, "Size",
+           "scale the model so its longest side is this many mm (0: keep its size; mesh files carry "
+           "no unit)"));
   out.push_back(real("height", "--height", "", "Slicing", "mm", 0, 0, 100000, 10, "Height",
                      "scale the model so its height along W (u x v) is this many mm (0: size sets it)"));
   out.push_back(real("time_limit", "--time-limit", "TimeLimit", "Slicing", "s", d.timeLimit, 0, 1e6, 10,
@@ -71,10 +74,11 @@ std::vector<ParamSpec> make() {
                      "seconds the design may take before its searches stop with the best found, which is "
                      "not called buildable (0: no limit)"));
   const HingeRules& h = a.hinges;
-  out.push_back(real("min_hinge_length", "--min-hinge-length", "MinHingeLength", "Hinges", "mm", h.minHingeLength,
-                     0, 1000, 0.5, "Shortest hinge", "mm a hinge must be long to carry load"));
-  out.push_back(real("min_slot_edge_distance", "--min-slot-edge-distance", "MinSlotEdgeDistance", "Hinges", "mm",
-                     h.minSlotEdgeDistance, 0, 1000, 0.5, "Paper beside a slot",
+  out.push_back(real("min_hinge_length", "--min-hinge-length", "MinHingeLength", "Hinges", "mm",
+                     h.minHingeLength, 0, 1000, 0.5, "Shortest hinge",
+                     "mm a hinge must be long to carry load"));
+  out.push_back(real("min_slot_edge_distance", "--min-slot-edge-distance", "MinSlotEdgeDistance", "Hinges",
+                     "mm", h.minSlotEdgeDistance, 0, 1000, 0.5, "Paper beside a slot",
                      "mm of paper to keep on each side of a slot"));
   out.push_back(real("min_spacing", "--min-spacing", "MinSpacing", "Hinges", "mm", a.stabilize.minSpacing, 0,
                      100000, 0.5, "Closest patches",
@@ -98,11 +102,12 @@ std::vector<ParamSpec> make() {
                        "sheet size: A4, A3, Letter, or WxH in mm (e.g. 600x400)"));
   out.push_back(real("margin", "--margin", "Margin", "Sheets", "mm", 10, 0, 1000, 1, "Sheet margin",
                      "mm kept clear along every sheet edge"));
-  out.push_back(real("spacing", "--spacing", "Spacing", "Sheets", "mm", 3, 0, 1000, 1, "Space between patches",
-                     "mm between patches on a sheet"));
-  ParamSpec rotate = real("rotate", "--no-rotate", "Rotate", "Sheets", "", 1, 0, 1, 1, "Rotate",
-                          "patches may be turned by quarters to nest better; off (--no-rotate) keeps every patch "
-                          "upright on the sheet (grain, printed textures)");
+  out.push_back(real("spacing", "--spacing", "Spacing", "Sheets", "mm", 3, 0, 1000, 1,
+                     "Space between patches", "mm between patches on a sheet"));
+  ParamSpec rotate =
+      real("rotate", "--no-rotate", "Rotate", "Sheets", "", 1, 0, 1, 1, "Rotate",
+           "patches may be turned by quarters to nest better; off (--no-rotate) keeps every patch "
+           "upright on the sheet (grain, printed textures)");
   rotate.kind = ParamKind::Bool;
   out.push_back(rotate);
   out.push_back(real("fold_angle", "--fold-angle", "FoldAngle", "Assembly", "deg", 90, 1, 90, 5, "Fold angle",

@@ -3,8 +3,8 @@
 
 #include <Interface_ParamType.hxx>
 #include <Interface_Static.hxx>
-#include <TCollection_HAsciiString.hxx>
 #include <TColStd_HSequenceOfHAsciiString.hxx>
+#include <TCollection_HAsciiString.hxx>
 
 #include <algorithm>
 
@@ -68,8 +68,7 @@ int StaticsSnapshot::restore() const {
 
 std::vector<std::string> StaticsSnapshot::describe() const {
   std::vector<std::string> out;
-  for (const Value& v : values_)
-    out.push_back(v.name + "=" + (v.set ? v.text : std::string("(unset)")));
+  for (const Value& v : values_) out.push_back(v.name + "=" + (v.set ? v.text : std::string("(unset)")));
   return out;
 }
 

@@ -22,11 +22,11 @@ class StaticsSnapshot {
 
   struct Value {
     std::string name;
-    int type;           // Interface_ParamType
-    bool set;           // IsSetValue()
-    int integer;        // IntegerValue(): integers and enumerations
-    double real;        // RealValue()
-    std::string text;   // HStringValue(): the value as text, every type
+    int type;          // Interface_ParamType
+    bool set;          // IsSetValue()
+    int integer;       // IntegerValue(): integers and enumerations
+    double real;       // RealValue()
+    std::string text;  // HStringValue(): the value as text, every type
   };
 
  private:
