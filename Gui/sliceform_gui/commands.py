@@ -225,17 +225,25 @@ class FoldCommand:
         obj = _selected_sliceform()
         self.obj, self.start = obj, float(obj.FoldAngle.Value)
         began = time.monotonic()
+        self.shown = []  # the angles of the frames drawn, in order
 
         def step():
             if not obj.isValid():
                 self.stop()
                 return
             t = (time.monotonic() - began) / self.SECONDS
-            if t >= 1:
+            # A slow frame must not skip the point of the animation: the first frame past
+            # the middle shows the sliceform flat (on a loaded machine frames came 0.5 s
+            # apart and the sweep turned back at 60 degrees).
+            if t >= 0.5 and self.FLAT not in self.shown:
+                t = 0.5
+            elif t >= 1:
                 self.stop()
                 return
             # Down and up again: 90 at t = 0 and 1, FLAT at t = 0.5.
-            obj.FoldAngle = 90 - (90 - self.FLAT) * (1 - abs(2 * t - 1))
+            angle = 90 - (90 - self.FLAT) * (1 - abs(2 * t - 1))
+            self.shown.append(angle)
+            obj.FoldAngle = angle
             obj.recompute()  # only re-poses the patches: the design is kept in memory
             FreeCADGui.updateGui()
 
