@@ -65,6 +65,7 @@ def run_one(cli, checker, model, args, out, timeout):
                    min_spacing=rep.get("min_patch_spacing_mm"), min_finger=rep.get("min_finger_mm"),
                    split=rep["split_patches"], interlocks=rep["interlocks"]["remaining"],
                    labels_missing=rep.get("partner_labels_missing"),
+                   labels_on_leaders=rep.get("partner_labels_on_leaders"),
                    iou=(rep["quality"]["silhouette_iou_u"], rep["quality"]["silhouette_iou_v"],
                         rep["quality"]["volume_iou"]))
         c = subprocess.run([sys.executable, checker, report_path], capture_output=True, text=True)

@@ -129,17 +129,19 @@ void writeOutputs(const Model& model, const DesignParams& params, const Design& 
 }
 
 void printLayout(const SheetLayout& l) {
-  int missing = 0, partners = 0;
+  int missing = 0, partners = 0, leaders = 0;
   std::string without;  // the patches with a slot left unlabelled
   for (const FlatPatch& p : l.patches) {
-    missing += p.partnersMissing, partners += static_cast<int>(p.partners.size());
+    missing += p.partnersMissing, partners += static_cast<int>(p.partners.size()),
+        leaders += p.partnersOnLeaders;
     if (p.partnersMissing > 0) without += (without.empty() ? "" : " ") + p.id;
   }
   std::printf("sheets     %d %s (%.0f x %.0f mm), %.0f %% used; shelf layout would take %d (%.0f %%)\n",
               l.packing.sheets, l.sheet.name.c_str(), l.sheet.width, l.sheet.height,
               100 * l.packing.utilisation, l.shelf.sheets, 100 * l.shelf.utilisation);
-  std::printf("labels     %zu patch ids, %d partner ids at slots; partner_labels_missing %d",
-              l.patches.size(), partners, missing);
+  std::printf("labels     %zu patch ids, %d partner ids at slots", l.patches.size(), partners);
+  if (leaders > 0) std::printf(" (%d with a leader line to a slot too crowded for it)", leaders);
+  std::printf("; partner_labels_missing %d", missing);
   if (missing > 0) std::printf(" (no room to read as the slot's on %s)", without.c_str());
   std::printf("\n");
 }

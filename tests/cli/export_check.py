@@ -214,9 +214,12 @@ def main():
                 fail(f"report sheets lacks {key}")
 
         # Slots left without their partner's id: the total is the patches' sum.
-        missing = sum(p["partner_labels_missing"] for p in report["patches"])
-        if report.get("partner_labels_missing") != missing:
-            fail(f"report partner_labels_missing {report.get('partner_labels_missing')}, patches sum to {missing}")
+        for key in ("partner_labels_missing", "partner_labels_on_leaders"):
+            total = sum(p[key] for p in report["patches"])
+            if report.get(key) != total:
+                fail(f"report {key} {report.get(key)}, patches sum to {total}")
+            if any(p[key] > p["partner_labels"] + p["partner_labels_missing"] for p in report["patches"]):
+                fail(f"a patch has more {key} than slots")
 
         # PDF: pages, page size, and every page renders.
         info = subprocess.run(["pdfinfo", os.path.join(out, "sheets.pdf")], capture_output=True, text=True).stdout

@@ -111,5 +111,72 @@ TEST(PartnerLabels, BesideTheSlotWhereThereIsRoom) {
   }
 }
 
+// A slot near the end of an arm of paper 1.8 mm wide: too narrow for a 1 mm label and its
+// margins anywhere along it, so no label beside the slot or on its line. Its label stands
+// in the body of the patch, and an engraved leader runs from the slot's root along the arm,
+// round the corner, to it: over paper all the way, crossing no other label.
+TEST(PartnerLabels, LeaderFromASlotAtANarrowTip) {
+  // A body 20 x 20 mm, its arm 15 mm long to the right and bent down at its end; the slot
+  // is cut down from the arm's top edge near its end, 0.5 mm wide, to the arm's middle.
+  const double y0 = 9.1, y1 = 10.9, x = 32, width = 0.5;
+  const Region2d::Loop outline{{0, 0},
+                               {20, 0},
+                               {20, y0},
+                               {36, y0},
+                               {36, y0 - 6},
+                               {37.8, y0 - 6},
+                               {37.8, y1},
+                               {x + width / 2, y1},
+                               {x + width / 2, 10},
+                               {x - width / 2, 10},
+                               {x - width / 2, y1},
+                               {20, y1},
+                               {20, 20},
+                               {0, 20}};
+  const Region2d paper = Region2d::fromLoops({outline});
+  const std::vector<LabelSpot> spots{{"V7", x, {y0, y1}, 10.45, width, {10, y1}}};
+  const PatchLabels labels = labelPatch(labelPaper(paper), "U3", spots);
+  EXPECT_EQ(labels.missing, 0);
+  ASSERT_EQ(labels.partners.size(), 1u);
+  const Label& l = labels.partners[0];
+  EXPECT_EQ(l.text, "V7");
+  EXPECT_GE(l.height, kMinLabelHeight - 1e-9);
+  ASSERT_GE(l.leader.size(), 2u);
+  // From just below the slot's root, on its line...
+  EXPECT_NEAR(l.leader.front().x, x, 1e-6);
+  EXPECT_LT(l.leader.front().y, 10);
+  EXPECT_GT(l.leader.front().y, y0);
+  // ...to the label's box, which lies on paper with its margin...
+  const Region2d clear = paper.offset(-0.59);
+  EXPECT_TRUE(boxOf(l).subtract(clear).empty()) << l.at.x << ", " << l.at.y;
+  const Vec2 end = l.leader.back();
+  const Vec2 half{(l.vertical ? l.height : labelWidth(l.text, l.height)) / 2,
+                  (l.vertical ? labelWidth(l.text, l.height) : l.height) / 2};
+  EXPECT_LE(std::max(std::abs(end.x - l.at.x) - half.x, std::abs(end.y - l.at.y) - half.y), 0.3);
+  // ...and every piece of it over paper, clear of the patch id, and engraved with the text.
+  const Region2d leaderPaper = paper.offset(-0.29);
+  for (size_t i = 1; i < l.leader.size(); ++i) {
+    const Vec2 a = l.leader[i - 1], b = l.leader[i];
+    for (int k = 0; k <= 20; ++k) {
+      const Vec2 p{a.x + (b.x - a.x) * k / 20, a.y + (b.y - a.y) * k / 20};
+      const Region2d dot = Region2d::fromLoops({{{p.x - 1e-3, p.y - 1e-3},
+                                                 {p.x + 1e-3, p.y - 1e-3},
+                                                 {p.x + 1e-3, p.y + 1e-3},
+                                                 {p.x - 1e-3, p.y + 1e-3}}});
+      EXPECT_TRUE(dot.subtract(leaderPaper).empty()) << p.x << ", " << p.y;
+      EXPECT_TRUE(dot.intersect(boxOf(labels.name)).empty()) << p.x << ", " << p.y;
+    }
+  }
+  // The leader and its arrowhead at the slot are engraved after the text.
+  ASSERT_GE(l.strokes.size(), 2u);
+  const Stroke& engraved = l.strokes[l.strokes.size() - 2];
+  ASSERT_EQ(engraved.size(), l.leader.size());
+  for (size_t i = 0; i < l.leader.size(); ++i)
+    EXPECT_TRUE(engraved[i].x == l.leader[i].x && engraved[i].y == l.leader[i].y);
+  const Stroke& arrow = l.strokes.back();
+  ASSERT_EQ(arrow.size(), 3u);
+  EXPECT_TRUE(arrow[1].x == l.leader[0].x && arrow[1].y == l.leader[0].y);
+}
+
 }  // namespace
 }  // namespace sliceform

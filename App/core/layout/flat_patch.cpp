@@ -169,6 +169,7 @@ FlatPatch flattenPatch(const Design& d, int k) {
   flat.name = std::move(labels.name);
   flat.partners = std::move(labels.partners);
   flat.partnersMissing = labels.missing;
+  for (const Label& l : flat.partners) flat.partnersOnLeaders += !l.leader.empty();
   return flat;
 }
 

@@ -34,10 +34,11 @@ using Stroke = std::vector<Vec2>;
 // A label: text set in strokes, and the box it occupies (for the report and the tests).
 struct Label {
   std::string text;
-  Vec2 at;                // centre of the text box
-  double height = 0;      // mm, cap height
-  bool vertical = false;  // rotated 90° (reads bottom to top)
-  std::vector<Stroke> strokes;
+  Vec2 at;                      // centre of the text box
+  double height = 0;            // mm, cap height
+  bool vertical = false;        // rotated 90° (reads bottom to top)
+  std::vector<Stroke> strokes;  // the text's and, last, the leader's
+  Stroke leader;                // from the slot to the box, where the label stands off; or empty
 };
 
 struct FlatPatch {
@@ -49,6 +50,7 @@ struct FlatPatch {
   Label name;                   // the patch id, well inside the patch
   std::vector<Label> partners;  // the partner's id beside each slot
   int partnersMissing = 0;      // slots with no room for a partner label
+  int partnersOnLeaders = 0;    // partner labels that stand off, with a leader to their slot
 };
 
 // Every patch of a design laid flat and labelled; `kerf` moves the cut paths as

@@ -3,15 +3,23 @@
 // partner ids' placer (partner_labels.cpp) share. Internal to the layout stage.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "geometry/region2d.hpp"
 #include "layout/flat_patch.hpp"
+#include "layout/labels.hpp"
 
 namespace sliceform {
 
 constexpr double kGap = 0.6;  // mm between labels, and between a label and its slot
+// mm of paper between a leader and any cut: a laser's engraved line beside a cut needs no
+// more, and a leader must pass where a label's box cannot.
+constexpr double kLeaderMargin = 0.3;
+
+// The paper a leader may cross: the patch less kLeaderMargin along every cut.
+Region2d leaderPaper(const Region2d& paper);
 
 // Half the width and height of a label's box, turned a quarter when `vertical`.
 Vec2 halfSize(const std::string& text, double height, bool vertical);
@@ -24,5 +32,12 @@ Region2d freeFor(const Region2d& inner, const std::vector<Label>& taken, Vec2 ha
 
 // The point of `region` nearest to `p` (p itself when inside).
 Vec2 nearestPoint(const Region2d& region, Vec2 p);
+
+// The label of a slot that no label beside it or on its line reads as its own (a slot at
+// a narrow tip, a line along the outline): in room within reach of the slot's root, joined
+// to it by an engraved straight leader over `leaderRoom` (leaderPaper), crossing no label
+// or leader in `taken`. Tried at `heights`, largest first; none when nothing is reached.
+std::optional<Label> leaderLabel(const Region2d& inner, const Region2d& leaderRoom, const LabelSpot& s,
+                                 const std::vector<Label>& taken, const std::vector<double>& heights);
 
 }  // namespace sliceform

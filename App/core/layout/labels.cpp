@@ -258,7 +258,7 @@ double labelWidth(const std::string& text, double height) {
 }
 
 Label setLabel(const std::string& text, Vec2 at, double height, bool vertical) {
-  Label label{text, at, height, vertical, {}};
+  Label label{text, at, height, vertical, {}, {}};
   const double s = height / kCap, w = labelWidth(text, height);
   for (size_t i = 0; i < text.size(); ++i) {
     const auto glyph = font().find(text[i]);
@@ -279,7 +279,11 @@ Label setLabel(const std::string& text, Vec2 at, double height, bool vertical) {
 LabelPaper labelPaper(const Region2d& paper) {
   // A rounded erosion's arcs are chords with their ends on the true arcs, up to the arc
   // tolerance nearer the cut: eroding that much more keeps the whole margin.
-  return {erode(simplified(paper), kEdgeMargin + kLabelTolerance)};
+  return {erode(simplified(paper), kEdgeMargin + kLabelTolerance), paper};
+}
+
+Region2d leaderPaper(const Region2d& paper) {
+  return erode(simplified(paper), kLeaderMargin + kLabelTolerance);
 }
 
 Label placeName(const Region2d& paper, const std::string& id) {
@@ -312,7 +316,7 @@ Label placeName(const LabelPaper& paper, const std::string& id, const std::vecto
       if (!room.empty()) return setLabel(id, deepestPoint(room), height, vertical);
     }
   }
-  return Label{id, {}, 0, false, {}};
+  return Label{id, {}, 0, false, {}, {}};
 }
 
 }  // namespace sliceform

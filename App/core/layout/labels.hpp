@@ -21,6 +21,9 @@ constexpr double kMinLabelHeight = 1.0;
 Label setLabel(const std::string& text, Vec2 at, double height, bool vertical);
 // Width of the text box at cap height `height`, mm.
 double labelWidth(const std::string& text, double height);
+// What a label's leader engraves: the leader itself, from the slot to the label, and an
+// arrowhead at the slot.
+std::vector<Stroke> leaderStrokes(const Stroke& leader);
 
 // Where a hinge meets the patch, for its partner label.
 struct LabelSpot {
@@ -36,6 +39,7 @@ struct LabelSpot {
 // placers start from it; a patch given to both computes it once.
 struct LabelPaper {
   Region2d inner;
+  Region2d paper;  // the patch itself, for leaders
 };
 LabelPaper labelPaper(const Region2d& paper);
 

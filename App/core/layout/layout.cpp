@@ -32,7 +32,10 @@ std::vector<const Label*> labelsOf(const FlatPatch& patch) {
 // box is the same box, a quarter turn swapping horizontal and vertical.
 Label upright(const Label& l, const Placement& at) {
   const bool quarter = std::lround(at.rotation / 90) % 2 != 0;
-  return setLabel(l.text, at.apply(l.at), l.height, l.vertical != quarter);
+  Label u = setLabel(l.text, at.apply(l.at), l.height, l.vertical != quarter);
+  for (const Vec2& p : l.leader) u.leader.push_back(at.apply(p));
+  for (Stroke& s : leaderStrokes(u.leader)) u.strokes.push_back(std::move(s));
+  return u;
 }
 
 }  // namespace

@@ -210,6 +210,7 @@ PatchLabels labelPatch(const LabelPaper& paper, const std::string& id, const std
   std::vector<size_t> order = inOrder(spots.size());
   std::vector<std::optional<Label>> partners = partnerLabels(paper.inner, spots, order, {out.name}, height);
   out.partners = present(partners, out.missing);
+  std::vector<std::optional<Label>> best = partners;  // out's partners, in spot order
   // A slot left without a label that has no room even on the bare patch has none whatever
   // the order: it is left out of the tries below.
   int hopeless = 0;
@@ -245,8 +246,23 @@ PatchLabels labelPatch(const LabelPaper& paper, const std::string& id, const std
     next.partners = present(partners, next.missing);
     if (next.missing >= out.missing) continue;
     next.name = placeName(paper, id, next.partners);
-    if (next.name.height > 0) out = std::move(next);  // the patch id comes first
+    if (next.name.height > 0) out = std::move(next), best = partners;  // the patch id comes first
   }
+  if (out.missing == 0) return out;
+  // What is left gets a label that stands off with a leader to its slot, set last so that
+  // every label that reads as its slot's on its own keeps its room.
+  const Region2d leaderRoom = leaderPaper(paper.paper);
+  std::vector<Label> taken = out.partners;
+  taken.push_back(out.name);
+  std::vector<double> sizes{std::min(height, kMaxPartnerHeight)};
+  if (sizes.front() > kMinLabelHeight) sizes.push_back(kMinLabelHeight);
+  for (size_t i = 0; i < spots.size(); ++i) {
+    if (best[i]) continue;
+    best[i] = leaderLabel(paper.inner, leaderRoom, spots[i], taken, sizes);
+    if (best[i]) taken.push_back(*best[i]);
+  }
+  out.missing = 0;
+  out.partners = present(best, out.missing);
   return out;
 }
 

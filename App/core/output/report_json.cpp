@@ -132,7 +132,8 @@ json reportJson(const Model& model, const DesignParams& params, const Design& d)
          {"placement", {{"x_mm", at.offset.x}, {"y_mm", at.offset.y}, {"rotation_deg", at.rotation}}},
          {"label", label(flat.name)},
          {"partner_labels", flat.partners.size()},
-         {"partner_labels_missing", flat.partnersMissing}});
+         {"partner_labels_missing", flat.partnersMissing},
+         {"partner_labels_on_leaders", flat.partnersOnLeaders}});
   }
   doc["patches"] = patches;
   json hinges = json::array();
@@ -193,11 +194,13 @@ json reportJson(const Model& model, const DesignParams& params, const Design& d)
                    {"shelf_count", l.shelf.sheets},
                    {"shelf_utilisation", l.shelf.utilisation}};
   // Slots without their partner's id: what whoever assembles has to work out from the 3D.
-  int partners = 0, missing = 0;
+  int partners = 0, missing = 0, leaders = 0;
   for (const FlatPatch& p : l.patches)
-    partners += static_cast<int>(p.partners.size()), missing += p.partnersMissing;
+    partners += static_cast<int>(p.partners.size()), missing += p.partnersMissing,
+        leaders += p.partnersOnLeaders;
   doc["partner_labels"] = partners;
   doc["partner_labels_missing"] = missing;
+  doc["partner_labels_on_leaders"] = leaders;  // of partner_labels: they stand off, a line leads to the slot
   doc["cylinders"] = {{"u", a.uCylinders.size()},
                       {"v", a.vCylinders.size()},
                       {"uncovered_u", a.scaffold.uncoveredU},

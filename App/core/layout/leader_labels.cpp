@@ -1,0 +1,287 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// The last resort for a partner label: where no label beside a slot or on its line reads
+// as that slot's (the slot is at a tip narrower than a 1 mm label with its margins, or its
+// line runs along the outline), the label stands off in the nearest room and an engraved
+// leader joins it to the slot, as a drawing's note points at what it names. The leader is
+// the shortest path over the paper, bending where the paper turns (round a slot's root,
+// out of a narrow tip), that crosses no label and no other leader.
+#include <algorithm>
+#include <cmath>
+
+#include "layout/label_room.hpp"
+
+namespace sliceform {
+namespace {
+
+constexpr double kReach = 15;       // mm from the slot the label may stand
+constexpr double kMaxLeader = 25;   // mm: a longer leader is a path to follow, not a pointer
+constexpr double kStandOff = 0.25;  // mm between a leader's end and the text it leads to
+constexpr double kStep = 0.5;       // mm between the centres tried
+constexpr double kInset = 0.05;     // mm a bend keeps inside the leader's paper
+constexpr double kLeaderGap = 0.2;  // mm between a leader and another label
+constexpr size_t kCentres = 64;     // centres a size tries, nearest the slot first
+
+struct Segment {
+  Vec2 a, b;
+};
+
+double cross(Vec2 o, Vec2 a, Vec2 b) {
+  return (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x);
+}
+
+double distance(Vec2 a, Vec2 b) {
+  return std::hypot(a.x - b.x, a.y - b.y);
+}
+
+bool segmentsCross(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {
+  return cross(a, b, c) * cross(a, b, d) < 0 && cross(c, d, a) * cross(c, d, b) < 0;
+}
+
+bool inside(const Region2d& region, Vec2 p) {
+  const Vec2 n = nearestPoint(region, p);  // p itself when inside
+  return n.x == p.x && n.y == p.y;
+}
+
+// Whether the segment a-b meets the box [lo, hi] (Liang-Barsky clipping).
+bool meetsBox(Vec2 a, Vec2 b, Vec2 lo, Vec2 hi) {
+  double t0 = 0, t1 = 1;
+  const double d[2] = {b.x - a.x, b.y - a.y}, p[2] = {a.x, a.y}, l[2] = {lo.x, lo.y}, h[2] = {hi.x, hi.y};
+  for (int k = 0; k < 2; ++k) {
+    if (std::abs(d[k]) < 1e-12) {
+      if (p[k] < l[k] || p[k] > h[k]) return false;
+      continue;
+    }
+    double e0 = (l[k] - p[k]) / d[k], e1 = (h[k] - p[k]) / d[k];
+    if (e0 > e1) std::swap(e0, e1);
+    t0 = std::max(t0, e0), t1 = std::min(t1, e1);
+    if (t0 > t1) return false;
+  }
+  return true;
+}
+
+// Whether the segment a-b lies over `room` all along, to Clipper's units (it clips an open
+// path): the final word on a leader the quicker tests below chose.
+bool overPaper(const Region2d& room, Vec2 a, Vec2 b) {
+  ClipperLib::Clipper clipper;
+  clipper.AddPath(
+      {{Region2d::toUnits(a.x), Region2d::toUnits(a.y)}, {Region2d::toUnits(b.x), Region2d::toUnits(b.y)}},
+      ClipperLib::ptSubject, false);
+  clipper.AddPaths(room.paths(), ClipperLib::ptClip, true);
+  ClipperLib::PolyTree outside;
+  clipper.Execute(ClipperLib::ctDifference, outside, ClipperLib::pftNonZero, ClipperLib::pftNonZero);
+  ClipperLib::Paths pieces;
+  ClipperLib::OpenPathsFromPolyTree(outside, pieces);
+  for (const ClipperLib::Path& piece : pieces)  // a speck of rounding at an end is no exit
+    for (size_t i = 1; i < piece.size(); ++i)
+      if (std::hypot(Region2d::toMm(piece[i].X - piece[i - 1].X),
+                     Region2d::toMm(piece[i].Y - piece[i - 1].Y)) > 1e-3)
+        return false;
+  return true;
+}
+
+// Where a leader may end at the slot, in its paper: just beyond either end of the slot on
+// its line (the end at the outline is off the paper, the root is not), or beside its
+// middle (a slot cut right through its hinge has no root).
+std::vector<Vec2> targets(const Region2d& room, const LabelSpot& s) {
+  const double d = kLeaderMargin + kInset, mid = (s.slot.lo + s.slot.hi) / 2;
+  std::vector<Vec2> ends;
+  if (s.slot.hi - s.slot.lo < 1e-9)
+    ends = {{s.x, s.slot.lo}};
+  else
+    ends = {{s.x, s.slot.lo - d},
+            {s.x, s.slot.hi + d},
+            {s.x + s.slotWidth / 2 + d, mid},
+            {s.x - s.slotWidth / 2 - d, mid}};
+  std::vector<Vec2> in;
+  for (const Vec2& t : ends)
+    if (inside(room, t)) in.push_back(t);
+  return in;
+}
+
+// The paper a leader crosses near one slot: the leader paper's edges within reach, the
+// points where a shortest path may bend (its reflex corners, a little inside), and what a
+// leader must not cross (the labels' boxes, with half the gap, and the leaders drawn).
+struct Field {
+  const Region2d& room;
+  std::vector<Segment> edges, leaders;
+  std::vector<Vec2> bends;
+  std::vector<std::pair<Vec2, Vec2>> boxes;
+
+  Field(const Region2d& leaderRoom, const std::vector<Label>& taken, Vec2 t) : room(leaderRoom) {
+    const double r = kReach + kMaxLeader / 2;
+    const auto near = [&](Vec2 p) { return std::abs(p.x - t.x) < r && std::abs(p.y - t.y) < r; };
+    for (const Region2d::Loop& loop : room.loops())
+      for (size_t i = 0, n = loop.size(); i < n; ++i) {
+        const Vec2 a = loop[(i + n - 1) % n], v = loop[i], b = loop[(i + 1) % n];
+        if (near(v) || near(b)) edges.push_back({v, b});
+        // The paper lies left of every loop (outer loops counter-clockwise, holes
+        // clockwise): a right turn is a corner a path bends round, just inside it.
+        if (!near(v) || cross(a, v, b) >= 0) continue;
+        const double la = distance(a, v), lb = distance(v, b);
+        if (la < 1e-9 || lb < 1e-9) continue;
+        const Vec2 na{-(v.y - a.y) / la, (v.x - a.x) / la}, nb{-(b.y - v.y) / lb, (b.x - v.x) / lb};
+        const double nl = std::hypot(na.x + nb.x, na.y + nb.y);
+        if (nl > 1e-9)
+          bends.push_back({v.x + kInset * (na.x + nb.x) / nl, v.y + kInset * (na.y + nb.y) / nl});
+      }
+    for (const Label& l : taken) {
+      const Vec2 h = halfSize(l.text, l.height, l.vertical);
+      const double g = kLeaderGap;
+      boxes.push_back({{l.at.x - h.x - g, l.at.y - h.y - g}, {l.at.x + h.x + g, l.at.y + h.y + g}});
+      // A path round a label bends at its box's corners, a little outside.
+      const double b = g + kInset;
+      for (const Vec2 c :
+           {Vec2{l.at.x - h.x - b, l.at.y - h.y - b}, Vec2{l.at.x + h.x + b, l.at.y - h.y - b},
+            Vec2{l.at.x + h.x + b, l.at.y + h.y + b}, Vec2{l.at.x - h.x - b, l.at.y + h.y + b}})
+        if (near(c) && inside(room, c)) bends.push_back(c);
+      for (size_t i = 1; i < l.leader.size(); ++i) leaders.push_back({l.leader[i - 1], l.leader[i]});
+    }
+  }
+
+  // Whether a leader may run straight from a to b: over the paper, clear of every label
+  // and leader.
+  bool clear(Vec2 a, Vec2 b) const {
+    for (const auto& [lo, hi] : boxes)
+      if (meetsBox(a, b, lo, hi)) return false;
+    for (const Segment& l : leaders)
+      if (segmentsCross(a, b, l.a, l.b)) return false;
+    for (const Segment& e : edges)
+      if (segmentsCross(a, b, e.a, e.b)) return false;
+    return inside(room, {(a.x + b.x) / 2, (a.y + b.y) / 2});
+  }
+};
+
+// Shortest paths from `t` over the field's bends (Dijkstra on the visibility graph):
+// `length[i]` and `from[i]` for every bend, and t itself last.
+struct Routes {
+  std::vector<Vec2> at;
+  std::vector<double> length;
+  std::vector<int> from;
+};
+
+Routes shortestPaths(const Field& f, Vec2 t) {
+  Routes p{f.bends, std::vector<double>(f.bends.size() + 1, HUGE_VAL),
+           std::vector<int>(f.bends.size() + 1, -1)};
+  p.at.push_back(t);
+  const size_t n = p.at.size();
+  p.length[n - 1] = 0;
+  std::vector<bool> done(n, false);
+  for (;;) {
+    size_t u = n;
+    for (size_t i = 0; i < n; ++i)
+      if (!done[i] && p.length[i] < kMaxLeader && (u == n || p.length[i] < p.length[u])) u = i;
+    if (u == n) break;
+    done[u] = true;
+    for (size_t v = 0; v < n; ++v) {
+      const double l = p.length[u] + distance(p.at[u], p.at[v]);
+      if (done[v] || l >= p.length[v] || l >= kMaxLeader || !f.clear(p.at[u], p.at[v])) continue;
+      p.length[v] = l, p.from[v] = static_cast<int>(u);
+    }
+  }
+  return p;
+}
+
+// The centres a label whose box may have its centre in `room` tries: the point nearest
+// `t`, points along the room's edges and a grid over it.
+std::vector<Vec2> centres(const Region2d& room, Vec2 t) {
+  std::vector<Vec2> out{nearestPoint(room, t)};
+  for (const Region2d::Loop& loop : room.loops())
+    for (size_t i = 0; i < loop.size(); ++i) {
+      const Vec2 a = loop[i], b = loop[(i + 1) % loop.size()];
+      const int n = static_cast<int>(distance(a, b) / kStep);
+      for (int k = 0; k <= n; ++k)
+        out.push_back({a.x + (b.x - a.x) * k / (n + 1), a.y + (b.y - a.y) * k / (n + 1)});
+    }
+  const Box2 b = room.bounds();
+  for (double x = b.min.x + kStep / 2; x < b.max.x; x += kStep)
+    for (double y = b.min.y + kStep / 2; y < b.max.y; y += kStep)
+      if (inside(room, {x, y})) out.push_back({x, y});
+  return out;
+}
+
+// The shortest leader to a box of half size `half` centred at one of `cs`: from the slot
+// along the paths to a point it sees, then straight to the box's edge (less the stand-off).
+Stroke shortestLeader(const Field& f, const Routes& p, const std::vector<Vec2>& all, Vec2 half,
+                      Vec2& centre) {
+  // The centres by how far the paths reach them, not looking where they pass: those behind
+  // a cut from the slot come after those round it.
+  std::vector<std::pair<double, Vec2>> cs;
+  for (const Vec2& c : all) {
+    double reach = HUGE_VAL;
+    for (size_t u = 0; u < p.at.size(); ++u) reach = std::min(reach, p.length[u] + distance(p.at[u], c));
+    if (reach < HUGE_VAL) cs.push_back({reach, c});
+  }
+  std::stable_sort(cs.begin(), cs.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+  if (cs.size() > kCentres) cs.resize(kCentres);
+  double best = kMaxLeader;
+  Stroke leader;
+  for (const auto& [reach, c] : cs) {
+    if (reach - half.x - half.y - 2 * kStandOff >= best) break;  // no shorter one beyond
+    const Vec2 lo{c.x - half.x - kStandOff, c.y - half.y - kStandOff},
+        hi{c.x + half.x + kStandOff, c.y + half.y + kStandOff};
+    for (size_t u = 0; u < p.at.size(); ++u) {
+      if (p.length[u] >= best) continue;
+      const Vec2 end{std::clamp(p.at[u].x, lo.x, hi.x), std::clamp(p.at[u].y, lo.y, hi.y)};
+      const double l = p.length[u] + distance(p.at[u], end);
+      if (l >= best || !f.clear(p.at[u], end)) continue;
+      Stroke path{end};
+      for (int v = static_cast<int>(u); v >= 0; v = p.from[v]) path.push_back(p.at[v]);
+      std::reverse(path.begin(), path.end());  // from the slot to the label
+      // The path to the box must not run over the box itself on its way.
+      bool across = false;
+      for (size_t i = 1; i + 1 < path.size() && !across; ++i) across = meetsBox(path[i - 1], path[i], lo, hi);
+      bool over = !across;
+      for (size_t i = 1; i < path.size() && over; ++i) over = overPaper(f.room, path[i - 1], path[i]);
+      if (!over) continue;
+      best = l, leader = std::move(path), centre = c;
+    }
+  }
+  return leader;
+}
+
+}  // namespace
+
+std::vector<Stroke> leaderStrokes(const Stroke& leader) {
+  if (leader.size() < 2) return {};
+  // An arrowhead at the slot, 0.5 mm long, its barbs 20 degrees off the leader: it stays
+  // within 0.2 mm of the leader's line, on the paper the leader crosses.
+  const Vec2 a = leader[0], b = leader[1];
+  const double l = distance(a, b), len = std::min(0.5, l), c = std::cos(0.35), s = std::sin(0.35);
+  const Vec2 d{(b.x - a.x) / l * len, (b.y - a.y) / l * len};
+  const Vec2 left{a.x + c * d.x - s * d.y, a.y + s * d.x + c * d.y},
+      right{a.x + c * d.x + s * d.y, a.y - s * d.x + c * d.y};
+  return {leader, {left, a, right}};
+}
+
+std::optional<Label> leaderLabel(const Region2d& inner, const Region2d& leaderRoom, const LabelSpot& s,
+                                 const std::vector<Label>& taken, const std::vector<double>& heights) {
+  // Boxes keep off the leaders already drawn (a segment's box will do).
+  std::vector<Box2> keepOff;
+  for (const Label& l : taken)
+    for (size_t i = 1; i < l.leader.size(); ++i)
+      keepOff.push_back(
+          {{std::min(l.leader[i - 1].x, l.leader[i].x), std::min(l.leader[i - 1].y, l.leader[i].y)},
+           {std::max(l.leader[i - 1].x, l.leader[i].x), std::max(l.leader[i - 1].y, l.leader[i].y)},
+           false});
+  for (const Vec2& t : targets(leaderRoom, s)) {
+    const Field field(leaderRoom, taken, t);
+    const Routes paths = shortestPaths(field, t);
+    for (const double height : heights)
+      for (const bool vertical : {false, true}) {
+        const Vec2 half = halfSize(s.text, height, vertical);
+        const Box2 window{{t.x - kReach, t.y - kReach}, {t.x + kReach, t.y + kReach}, false};
+        const Region2d room = freeFor(inner, taken, half, window, keepOff);
+        if (room.empty()) continue;
+        Vec2 centre;
+        Stroke leader = shortestLeader(field, paths, centres(room, t), half, centre);
+        if (leader.empty()) continue;
+        Label label = setLabel(s.text, centre, height, vertical);
+        for (Stroke& stroke : leaderStrokes(leader)) label.strokes.push_back(std::move(stroke));
+        label.leader = std::move(leader);
+        return label;
+      }
+  }
+  return std::nullopt;
+}
+
+}  // namespace sliceform
