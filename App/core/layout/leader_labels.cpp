@@ -18,8 +18,10 @@ constexpr double kMaxLeader = 25;   // mm: a longer leader is a path to follow, 
 constexpr double kStandOff = 0.25;  // mm between a leader's end and the text it leads to
 constexpr double kStep = 0.5;       // mm between the centres tried
 constexpr double kInset = 0.05;     // mm a bend keeps inside the leader's paper
-constexpr double kLeaderGap = 0.2;  // mm between a leader and another label
-constexpr size_t kCentres = 64;     // centres a size tries, nearest the slot first
+// mm between a leader and another label: the labels' own gap where the paper allows, so a
+// leader does not read as underlining a label it passes; where it does not, less.
+constexpr double kLeaderGaps[] = {kGap, 0.2};
+constexpr size_t kCentres = 64;  // centres a size tries, nearest the slot first
 
 struct Segment {
   Vec2 a, b;
@@ -107,7 +109,7 @@ struct Field {
   std::vector<Vec2> bends;
   std::vector<std::pair<Vec2, Vec2>> boxes;
 
-  Field(const Region2d& leaderRoom, const std::vector<Label>& taken, Vec2 t) : room(leaderRoom) {
+  Field(const Region2d& leaderRoom, const std::vector<Label>& taken, Vec2 t, double g) : room(leaderRoom) {
     const double r = kReach + kMaxLeader / 2;
     const auto near = [&](Vec2 p) { return std::abs(p.x - t.x) < r && std::abs(p.y - t.y) < r; };
     for (const Region2d::Loop& loop : room.loops())
@@ -126,7 +128,6 @@ struct Field {
       }
     for (const Label& l : taken) {
       const Vec2 h = halfSize(l.text, l.height, l.vertical);
-      const double g = kLeaderGap;
       boxes.push_back({{l.at.x - h.x - g, l.at.y - h.y - g}, {l.at.x + h.x + g, l.at.y + h.y + g}});
       // A path round a label bends at its box's corners, a little outside.
       const double b = g + kInset;
@@ -263,24 +264,25 @@ std::optional<Label> leaderLabel(const Region2d& inner, const Region2d& leaderRo
           {{std::min(l.leader[i - 1].x, l.leader[i].x), std::min(l.leader[i - 1].y, l.leader[i].y)},
            {std::max(l.leader[i - 1].x, l.leader[i].x), std::max(l.leader[i - 1].y, l.leader[i].y)},
            false});
-  for (const Vec2& t : targets(leaderRoom, s)) {
-    const Field field(leaderRoom, taken, t);
-    const Routes paths = shortestPaths(field, t);
-    for (const double height : heights)
-      for (const bool vertical : {false, true}) {
-        const Vec2 half = halfSize(s.text, height, vertical);
-        const Box2 window{{t.x - kReach, t.y - kReach}, {t.x + kReach, t.y + kReach}, false};
-        const Region2d room = freeFor(inner, taken, half, window, keepOff);
-        if (room.empty()) continue;
-        Vec2 centre;
-        Stroke leader = shortestLeader(field, paths, centres(room, t), half, centre);
-        if (leader.empty()) continue;
-        Label label = setLabel(s.text, centre, height, vertical);
-        for (Stroke& stroke : leaderStrokes(leader)) label.strokes.push_back(std::move(stroke));
-        label.leader = std::move(leader);
-        return label;
-      }
-  }
+  for (const double gap : kLeaderGaps)
+    for (const Vec2& t : targets(leaderRoom, s)) {
+      const Field field(leaderRoom, taken, t, gap);
+      const Routes paths = shortestPaths(field, t);
+      for (const double height : heights)
+        for (const bool vertical : {false, true}) {
+          const Vec2 half = halfSize(s.text, height, vertical);
+          const Box2 window{{t.x - kReach, t.y - kReach}, {t.x + kReach, t.y + kReach}, false};
+          const Region2d room = freeFor(inner, taken, half, window, keepOff);
+          if (room.empty()) continue;
+          Vec2 centre;
+          Stroke leader = shortestLeader(field, paths, centres(room, t), half, centre);
+          if (leader.empty()) continue;
+          Label label = setLabel(s.text, centre, height, vertical);
+          for (Stroke& stroke : leaderStrokes(leader)) label.strokes.push_back(std::move(stroke));
+          label.leader = std::move(leader);
+          return label;
+        }
+    }
   return std::nullopt;
 }
 
