@@ -5,6 +5,10 @@ properties, the core's parameter dict, the task panel's rows. FreeCAD adds only 
 own: the custom sheet's width and height, and a solid's Size 0 (it keeps its true size; a
 mesh, which carries no unit, gets the schema's size)."""
 
+import FreeCAD
+
+QT_TRANSLATE_NOOP = FreeCAD.Qt.QT_TRANSLATE_NOOP
+
 _table = []
 
 
@@ -38,8 +42,8 @@ def freecad_type(s):
 
 # FreeCAD's own: (property, type, group, default, tooltip), after SheetSize.
 _SHEET = (
-    ("SheetWidth", "App::PropertyLength", "Sheets", 600.0, "Custom sheet width"),
-    ("SheetHeight", "App::PropertyLength", "Sheets", 400.0, "Custom sheet height"),
+    ("SheetWidth", "App::PropertyLength", "Sheets", 600.0, QT_TRANSLATE_NOOP("App::Property", "Custom sheet width")),
+    ("SheetHeight", "App::PropertyLength", "Sheets", 400.0, QT_TRANSLATE_NOOP("App::Property", "Custom sheet height")),
 )
 # Defaults FreeCAD sets apart from the schema's (see the module's doc).
 FREECAD_DEFAULTS = {"Size": 0.0}
@@ -75,20 +79,20 @@ def table():
 
 # Read-only results: (property, type, tooltip)
 RESULTS = (
-    ("PatchCount", "App::PropertyInteger", "Patches in the design"),
-    ("Stable", "App::PropertyBool", "The slotted design is rigid apart from the fold (certificate nullity 1)"),
-    ("Interlocks", "App::PropertyInteger", "Interlocked loop pairs left: the design cannot be assembled if > 0"),
-    ("SmallestSlotEdgeDistance", "App::PropertyLength", "Smallest paper left beside a slot"),
-    ("ShortestHinge", "App::PropertyLength", "Shortest holding hinge"),
+    ("PatchCount", "App::PropertyInteger", QT_TRANSLATE_NOOP("App::Property", "Patches in the design")),
+    ("Stable", "App::PropertyBool", QT_TRANSLATE_NOOP("App::Property", "The slotted design is rigid apart from the fold (certificate nullity 1)")),
+    ("Interlocks", "App::PropertyInteger", QT_TRANSLATE_NOOP("App::Property", "Interlocked loop pairs left: the design cannot be assembled if > 0")),
+    ("SmallestSlotEdgeDistance", "App::PropertyLength", QT_TRANSLATE_NOOP("App::Property", "Smallest paper left beside a slot")),
+    ("ShortestHinge", "App::PropertyLength", QT_TRANSLATE_NOOP("App::Property", "Shortest holding hinge")),
     ("MinPatchSpacing", "App::PropertyLength",
-     "Closest two patches of one family that overlap seen along their normal (0: none do)"),
-    ("MinFinger", "App::PropertyLength", "Paper left between their slots on a common partner"),
-    ("Buildable", "App::PropertyBool", "The design meets every rule of the fabrication contract"),
-    ("VolumeIoU", "App::PropertyFloat", "Volume IoU of the sliceform against the source (1 = perfect)"),
-    ("SheetCount", "App::PropertyInteger", "Sheets used by the layout"),
+     QT_TRANSLATE_NOOP("App::Property", "Closest two patches of one family that overlap seen along their normal (0: none do)")),
+    ("MinFinger", "App::PropertyLength", QT_TRANSLATE_NOOP("App::Property", "Paper left between their slots on a common partner")),
+    ("Buildable", "App::PropertyBool", QT_TRANSLATE_NOOP("App::Property", "The design meets every rule of the fabrication contract")),
+    ("VolumeIoU", "App::PropertyFloat", QT_TRANSLATE_NOOP("App::Property", "Volume IoU of the sliceform against the source (1 = perfect)")),
+    ("SheetCount", "App::PropertyInteger", QT_TRANSLATE_NOOP("App::Property", "Sheets used by the layout")),
     ("ChosenDirections", "App::PropertyString",
-     "With Directions auto: the frame chosen, its U and V, and why it won"),
-    ("Report", "App::PropertyString", "Summary of the last recompute"),
+     QT_TRANSLATE_NOOP("App::Property", "With Directions auto: the frame chosen, its U and V, and why it won")),
+    ("Report", "App::PropertyString", QT_TRANSLATE_NOOP("App::Property", "Summary of the last recompute")),
 )
 
 

@@ -14,7 +14,7 @@ def brep_of(obj, size=0.0):
     the centre of its box so that its longest side is that long."""
     shape = Part.getShape(obj)  # applies the placements of the object and its containers
     if shape.isNull():
-        raise ValueError("{} has no shape".format(obj.Label))
+        raise ValueError(FreeCAD.Qt.translate("Sliceform", "{} has no shape").format(obj.Label))
     box = shape.BoundBox
     longest = max(box.XLength, box.YLength, box.ZLength)
     if size > 0 and longest > 0:

@@ -10,5 +10,9 @@ def icon_path(name):
     return os.path.join(RESOURCES, "icons", name)
 
 
+def translations_path():
+    return os.path.join(RESOURCES, "translations")
+
+
 def ui_path(name):
     return os.path.join(RESOURCES, "ui", name)

@@ -7,6 +7,10 @@ import FreeCADGui
 
 from PySide.QtCore import QT_TRANSLATE_NOOP
 
+translate = FreeCAD.Qt.translate
+# pylupdate5 (scripts/update-translations) finds a marked string only when its context is on
+# the call's own line and no comma trails the text: keep calls so, the schema test checks.
+
 from sliceform_gui import icon_path
 
 
@@ -91,12 +95,10 @@ class CreateCommand:
             "Pixmap": icon_path("Sliceform_Create.svg"),
             "MenuText": QT_TRANSLATE_NOOP("Sliceform_Create", "Create sliceform"),
             "Accel": "S, C",
-            "ToolTip": QT_TRANSLATE_NOOP(
-                "Sliceform_Create",
+            "ToolTip": QT_TRANSLATE_NOOP("Sliceform_Create",
                 "Design a paper sliceform of the selected solid, PartDesign body or closed mesh: "
                 "slotted patches, each on its plane and on its sheet, and a TechDraw page per "
-                "sheet. It follows the source when the source changes.",
-            ),
+                "sheet. It follows the source when the source changes."),
         }
 
     def IsActive(self):
@@ -175,7 +177,9 @@ class ExportCommand:
         from PySide import QtGui
 
         obj = _selected_sliceform()
-        folder = QtGui.QFileDialog.getExistingDirectory(FreeCADGui.getMainWindow(), "Export the layout into")
+        folder = QtGui.QFileDialog.getExistingDirectory(
+            FreeCADGui.getMainWindow(), translate("Sliceform", "Export the layout into")
+        )
         if not folder:
             return
         try:
@@ -184,7 +188,10 @@ class ExportCommand:
             _error(e)
             return
         FreeCAD.Console.PrintMessage(
-            "Sliceform: wrote {} files into {}: {}\n".format(len(files["written"]), folder, ", ".join(files["written"]))
+            translate("Sliceform", "Sliceform: wrote {} files into {}: {}").format(
+                len(files["written"]), folder, ", ".join(files["written"])
+            )
+            + "\n"
         )
 
 
@@ -280,11 +287,11 @@ class ReportCommand:
         from PySide import QtGui
 
         obj = _selected_sliceform()
-        text = obj.Report if obj.isValid() else "Error: " + obj.getStatusString()
+        text = obj.Report if obj.isValid() else translate("Sliceform", "Error: ") + obj.getStatusString()
         box = QtGui.QMessageBox(FreeCADGui.getMainWindow())
-        box.setWindowTitle("{} report".format(obj.Label))
-        box.setText(text or "Not computed yet: recompute the sliceform.")
-        save = box.addButton("Save report.json...", QtGui.QMessageBox.ActionRole)
+        box.setWindowTitle(translate("Sliceform", "{} report").format(obj.Label))
+        box.setText(text or translate("Sliceform", "Not computed yet: recompute the sliceform."))
+        save = box.addButton(translate("Sliceform", "Save report.json..."), QtGui.QMessageBox.ActionRole)
         box.addButton(QtGui.QMessageBox.Close)
         box.exec_()
         if box.clickedButton() != save:
@@ -295,7 +302,10 @@ class ReportCommand:
             _error(e)
             return
         if report:
-            path, _ = QtGui.QFileDialog.getSaveFileName(box, "Save report", "report.json", "JSON (*.json)")
+            name = "report.json"  # the CLI's file name, not a text to translate
+            path, _ = QtGui.QFileDialog.getSaveFileName(
+                box, translate("Sliceform", "Save report"), name, translate("Sliceform", "JSON (*.json)")
+            )
             if path:
                 with open(path, "w") as f:
                     f.write(report)
@@ -310,12 +320,10 @@ class AssemblyStepsCommand:
         return {
             "Pixmap": icon_path("Sliceform_Steps.svg"),
             "MenuText": QT_TRANSLATE_NOOP("Sliceform_AssemblySteps", "Assembly steps"),
-            "ToolTip": QT_TRANSLATE_NOOP(
-                "Sliceform_AssemblySteps",
+            "ToolTip": QT_TRANSLATE_NOOP("Sliceform_AssemblySteps",
                 "Step through the selected sliceform's assembly order: the patches placed so far, the "
                 "new one in orange, and the partners its slots go onto (a display mode: the document "
-                "is not changed)",
-            ),
+                "is not changed)"),
         }
 
     def IsActive(self):

@@ -17,7 +17,9 @@ translate = FreeCAD.Qt.translate
 # from the core's parameter schema (the custom sheet's size is FreeCAD's own).
 NUMBERS = ("Slices", "Size", "Thickness", "Clearance", "Kerf", "MinHingeLength", "MinSlotEdgeDistance", "TauA",
            "Margin", "Spacing", "SheetWidth", "SheetHeight", "FoldAngle")
-_SHEET_ROW = {"label": "Custom sheet", "min": 10.0, "max": 10000.0, "step": 10.0, "unit": "mm", "kind": "real"}
+_SHEET_ROW = {"min": 10.0, "max": 10000.0, "step": 10.0, "unit": "mm", "kind": "real"}
+_SHEET_LABELS = {"SheetWidth": QT_TRANSLATE_NOOP("Sliceform", "Custom sheet width"),
+                 "SheetHeight": QT_TRANSLATE_NOOP("Sliceform", "Custom sheet height")}
 _SUFFIX = {"mm": " mm", "s": " s", "deg": "\u00b0"}
 
 
@@ -28,8 +30,7 @@ def number_rows():
     by_property = {s["property"]: s for s in parameters.schema() if s["property"]}
     rows = []
     for name in NUMBERS:
-        s = by_property.get(name) or dict(_SHEET_ROW, label="{} {}".format(
-            _SHEET_ROW["label"], "width" if name == "SheetWidth" else "height"))
+        s = by_property.get(name) or dict(_SHEET_ROW, label=_SHEET_LABELS[name])
         text = repr(float(s["step"]))
         decimals = 0 if s["kind"] == "integer" else max(1, len(text.split(".")[1].rstrip("0")))
         rows.append((name, s["label"], s["min"], s["max"], s["step"], decimals, _SUFFIX.get(s["unit"], "")))
@@ -54,7 +55,7 @@ class SliceformTaskPanel:
         self.doc = obj.Document
         self.doc.openTransaction("Edit sliceform")
         self.form = QtGui.QWidget()
-        self.form.setWindowTitle("Sliceform")
+        self.form.setWindowTitle(translate("Sliceform", "Sliceform"))
         layout = QtGui.QFormLayout(self.form)
         # In FreeCAD's narrow Combo View a row whose label and field do not fit side by side
         # gets its field under the label, rather than the field clipped at the edge.
@@ -72,15 +73,16 @@ class SliceformTaskPanel:
             box.setSingleStep(step)
             box.setSuffix(suffix)
             box.setValue(int(_value(obj, name)) if decimals == 0 else _value(obj, name))
-            box.setToolTip(obj.getDocumentationOfProperty(name))
-            layout.addRow(label, box)
+            box.setToolTip(translate("App::Property", obj.getDocumentationOfProperty(name)))
+            # Schema labels are in the translation template too (scripts/update-translations).
+            layout.addRow(translate("Sliceform", label), box)
             self.numbers[name] = box
         self.choices = {}
         for name, label in CHOICES:
             combo = QtGui.QComboBox()
             combo.addItems(obj.getEnumerationsOfProperty(name))
             combo.setCurrentIndex(combo.findText(getattr(obj, name)))
-            combo.setToolTip(obj.getDocumentationOfProperty(name))
+            combo.setToolTip(translate("App::Property", obj.getDocumentationOfProperty(name)))
             layout.addRow(translate("Sliceform", label), combo)
             self.choices[name] = combo
         self.button = QtGui.QPushButton(translate("Sliceform", "Recompute"))

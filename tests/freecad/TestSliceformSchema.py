@@ -124,5 +124,52 @@ class TestSliceformSchema(unittest.TestCase):
         self.assertTrue(all(name in by_property for name in feature.PREFERRED))
 
 
+    def test_translation_template_holds_every_string(self):
+        """Resources/translations/Sliceform.ts (scripts/update-translations) holds every string
+        the workbench marks for translation and every schema label and tooltip; and no string
+        shown to the user is left unmarked."""
+        import ast
+        import glob
+
+        from sliceform_app import ADDON_DIR
+
+        ts = ET.parse(os.path.join(ADDON_DIR, "Resources", "translations", "Sliceform.ts")).getroot()
+        template = {(c.findtext("name"), m.findtext("source")) for c in ts.iter("context") for m in c.iter("message")}
+        sources = glob.glob(os.path.join(ADDON_DIR, "Gui", "sliceform_gui", "*.py"))
+        sources += glob.glob(os.path.join(ADDON_DIR, "App", "sliceform_app", "*.py"))
+        sources.append(os.path.join(ADDON_DIR, "InitGui.py"))
+        # Calls that put their string arguments in front of the user.
+        shown = {"setText", "QLabel", "QPushButton", "setWindowTitle", "setToolTip", "setPlainText", "addRow",
+                 "PrintMessage", "PrintWarning", "information", "warning", "critical", "question",
+                 "getSaveFileName", "getOpenFileName", "getExistingDirectory", "QCheckBox", "QGroupBox",
+                 "setStatusTip", "showMessage", "setPlaceholderText", "addButton", "setTitle"}
+        marked, unmarked = set(), []
+        for path in sources:
+            with open(path) as f:
+                tree = ast.parse(f.read())
+            for node in ast.walk(tree):
+                if not isinstance(node, ast.Call):
+                    continue
+                name = node.func.attr if isinstance(node.func, ast.Attribute) else getattr(node.func, "id", "")
+                literals = [a.value for a in node.args if isinstance(a, ast.Constant) and isinstance(a.value, str)]
+                if name in ("translate", "QT_TRANSLATE_NOOP") and len(literals) == 2:
+                    marked.add(tuple(literals))
+                if name in shown:
+                    for a in node.args:
+                        text = a.func.value if (isinstance(a, ast.Call) and isinstance(a.func, ast.Attribute)
+                                                and a.func.attr == "format") else a
+                        if isinstance(text, ast.JoinedStr) or (
+                                isinstance(text, ast.Constant) and isinstance(text.value, str)
+                                and any(ch.isalpha() for ch in text.value)):
+                            unmarked.append("{}:{} {}".format(os.path.basename(path), node.lineno, name))
+        self.assertGreater(len(marked), 40)
+        self.assertEqual(sorted(marked - template), [], "run scripts/update-translations")
+        self.assertEqual(unmarked, [], "user-visible strings not marked for translation")
+        for s in self.schema:
+            if s["property"]:
+                self.assertIn(("Sliceform", s["label"]), template, s["key"])
+                self.assertIn(("App::Property", s["help"]), template, s["key"])
+
+
 if __name__ == "__main__":
     unittest.main()
