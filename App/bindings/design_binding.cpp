@@ -7,6 +7,7 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <chrono>
 #include <memory>
 #include <string>
 
@@ -242,6 +243,32 @@ void bindDesign(py::module_& m) {
       .def("sheets", &sheets,
            "The nested sheets: size and, per sheet, a list of its patches, each with id, cut loops "
            "and engraved strokes in sheet coordinates")
+      .def(
+          "relaid",
+          [](const PyDesign& d, const py::dict& sheetParams) {
+            // Only the sheet changed: the same patches, nested again. The sheet's keys are
+            // read as design() reads them (defaults for any not given).
+            for (const auto& item : sheetParams) {
+              const std::string key = py::str(item.first);
+              if (key != "sheet" && key != "margin" && key != "spacing" && key != "rotate")
+                throw Error(ErrorKind::BadParameter,
+                            "relaid() takes the sheet's parameters only, not " + key);
+            }
+            const Run run = readParams(sheetParams);
+            auto result = std::make_shared<PyDesign>(d);
+            result->params.sheet = run.params.sheet;
+            py::gil_scoped_release release;
+            const auto start = std::chrono::steady_clock::now();
+            result->design.layout = layOut(result->design, result->params.sheet);
+            for (StageTime& t : result->design.timings)
+              if (t.stage == "layout")
+                t.ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+                           .count();
+            return result;
+          },
+          py::arg("sheet_params"),
+          "The same design laid out on other sheets: `sheet_params` holds sheet, margin, spacing and "
+          "rotate as design() takes them (a sheet or margin edit needs no new design)")
       .def(
           "write_files",
           [](const PyDesign& d, const std::string& folder, double theta) {

@@ -149,6 +149,10 @@ def restore_traceback():
         del _saved_limit[:]
 
 
+# The design's parameters that only the layout reads.
+SHEET_KEYS = ("sheet", "margin", "spacing", "rotate")
+
+
 def _key(source, params):
     digest = hashlib.sha1(json.dumps(params, sort_keys=True).encode())
     digest.update(source.get("brep", "").encode())
@@ -226,6 +230,7 @@ class Sliceform:
 
     def _forget(self):
         self.designs = {}  # key -> (design, report, flat patches, sheets)
+        self.unlaid = {}  # key -> the key of its inputs but the sheet's
         self.design, self.key, self.report = None, None, None
 
     def onDocumentRestored(self, obj):
@@ -257,6 +262,16 @@ class Sliceform:
         source = source_of(obj.Source, size)
         return source, params, _key(source, dict(params, size=size))
 
+    def _relaid(self, source, params, key):
+        """A design in memory whose inputs differ from these in the sheet only, laid out on
+        this sheet (a sheet, margin or spacing edit needs no new design); or None."""
+        unlaid = _key(source, {k: v for k, v in params.items() if k not in SHEET_KEYS})
+        self.unlaid[key] = unlaid
+        for other, entry in self.designs.items():
+            if self.unlaid.get(other) == unlaid:
+                return entry[0].relaid({k: params[k] for k in SHEET_KEYS if k in params})
+        return None
+
     def ensure_design(self, obj):
         """The design for the feature's source and properties as they are: the one in
         memory, or designed now (after a reopen, an Undo or a Cancel). Raises DesignError
@@ -272,7 +287,7 @@ class Sliceform:
         if key not in self.designs:
             progress = Progress()
             try:
-                design = native().design(source, params, progress)
+                design = self._relaid(source, params, key) or native().design(source, params, progress)
             except native().Error as e:
                 raise DesignError(parameters.property_message(str(e))) from None
             finally:
@@ -280,7 +295,9 @@ class Sliceform:
             report = json.loads(design.report_json())
             self.designs[key] = (design, report, None, None)
             while len(self.designs) > self.KEEP:
-                self.designs.pop(next(iter(self.designs)))
+                oldest = next(iter(self.designs))
+                self.designs.pop(oldest)
+                self.unlaid.pop(oldest, None)
         self.key = key
         self.design, self.report = self.designs[key][:2]
         return self.design

@@ -3,6 +3,7 @@
 pocket and a mesh; stable, no interlocks, a patch feature per patch (a face on its plane),
 TechDraw pages that write DXF; editing the source redesigns; a failure leaves the document
 and the source intact; save, close, reopen and recompute. Run through TestSliceform (tests/freecad/run.sh)."""
+import json
 import os
 import re
 import tempfile
@@ -164,6 +165,38 @@ class TestSliceformFeature(unittest.TestCase):
         self.assertEqual(len(sliceform.Shape.Faces), sliceform.PatchCount)
         # Folding flattens the lattice: the footprint across U x V shrinks.
         self.assertLess(folded.XLength * folded.YLength, 0.8 * popped.XLength * popped.YLength)
+
+    def test_sheet_edit_lays_out_the_same_design_again(self):
+        """A sheet, margin or spacing edit reuses the design in memory and only nests it again
+        (issue 17); the result is what a fresh design on that sheet gives. A Thickness edit
+        designs anew."""
+        import sliceform_native
+        from sliceform_app import feature
+
+        box = self.doc.addObject("Part::Box", "Box")
+        box.Length, box.Width, box.Height = 120, 80, 60
+        self.doc.recompute()
+        sliceform = feature.makeSliceform(box, Slices=10)
+        self.assertTrue(sliceform.isValid(), sliceform.getStatusString())
+        calls = []
+        design = sliceform_native.design
+        sliceform_native.design = lambda *a, **k: calls.append(a) or design(*a, **k)
+        try:
+            self.edit("Edit SheetSize", lambda: setattr(sliceform, "SheetSize", "A3"))
+            self.edit("Edit Margin", lambda: setattr(sliceform, "Margin", 15))
+            self.assertEqual(calls, [])
+            self.assertTrue(sliceform.isValid(), sliceform.getStatusString())
+            relaid = json.loads(sliceform.Proxy.report_json(sliceform))
+            source, params, _ = sliceform.Proxy._inputs(sliceform)
+            fresh = json.loads(design(source, params).report_json())
+            self.assertEqual(relaid["sheets"]["name"], "A3")
+            self.assertEqual(relaid["sheets"], fresh["sheets"])
+            self.assertEqual([p["placement"] for p in relaid["patches"]], [p["placement"] for p in fresh["patches"]])
+            self.assertEqual(sliceform.SheetCount, fresh["sheets"]["count"])
+            self.edit("Edit Thickness", lambda: setattr(sliceform, "Thickness", 0.5))
+            self.assertEqual(len(calls), 1)
+        finally:
+            sliceform_native.design = design
 
     def test_partdesign_body_with_pocket(self):
         from sliceform_app import feature
