@@ -8,10 +8,10 @@ way TechDraw views depend on their source:
   the patch out of its sheet, in sheet millimetres;
 - a TechDraw page per sheet (dynamic properties `Sliceform` and `SheetIndex`) with a
   template of the sheet's size and one view per sheet patch;
-- an *engraving* (Part::FeaturePython) per sheet, linking the sliceform and its sheet: the
-  engraved strokes (ids, partner labels) of every patch on that sheet, in one view of its
-  own, so that TechDraw's DXF puts them on their own layer (`..._Engrave`), apart from the
-  cuts (a layer per patch view).
+- an *engraving* (Part::FeaturePython) per patch, linking the patch: its engraved strokes
+  (id, partner labels, leaders) in sheet millimetres, in a view of its own drawn after the
+  page's patch views, so that TechDraw's DXF puts them on a layer of their own
+  (`<patch>_Engrave`), apart from the cuts (a layer per patch view).
 
 Each child builds its geometry in its own execute() from the design the Sliceform's proxy
 holds in memory (designed again on demand, after a reopen). The feature itself never adds,
@@ -69,10 +69,21 @@ def pages_of(sliceform):
     return sorted(found, key=lambda o: o.SheetIndex)
 
 
+def engraving_of(patch):
+    for o in patch.InList:
+        if _proxy_type(o) == "SliceformEngraving" and getattr(o, "Patch", None) == patch:
+            return o
+    return None
+
+
 def engravings_of(sliceform):
-    """The engraving children of a sliceform, by sheet."""
-    found = [o for o in sliceform.InList if _proxy_type(o) == "SliceformEngraving" and o.Sliceform == sliceform]
-    return sorted(found, key=lambda o: o.SheetIndex)
+    """The engraving children of a sliceform, by patch."""
+    return [e for e in map(engraving_of, patches_of(sliceform)) if e is not None]
+
+
+def _sheet_engravings(sliceform):
+    """Engravings of a whole sheet, as documents made before engravings per patch hold."""
+    return [o for o in sliceform.InList if _proxy_type(o) == "SliceformEngraving" and getattr(o, "Sliceform", None) == sliceform]
 
 
 def views_of(obj):
@@ -81,8 +92,21 @@ def views_of(obj):
 
 
 def patch_views(page):
-    """The views of a page that show patches (not its engraving)."""
+    """The views of a page that show patches (not their engravings)."""
     return [v for v in page.Views if v.Source and _proxy_type(v.Source[0]) == "SliceformSheetPatch"]
+
+
+def engraving_views(page):
+    """The views of a page that show engravings."""
+    return [v for v in page.Views if v.Source and _proxy_type(v.Source[0]) == "SliceformEngraving"]
+
+
+def _drawn_in_order(page):
+    """Whether the page draws every patch view before every engraving view: each patch
+    view's white face would hide the labels of an engraving drawn before it."""
+    kinds = [_proxy_type(v.Source[0]) if v.Source else None for v in page.Views]
+    engraved = [k == "SliceformEngraving" for k in kinds]
+    return engraved == sorted(engraved)
 
 
 def owned_objects(sliceform):
@@ -95,15 +119,15 @@ def owned_objects(sliceform):
         if template is not None and not isinstance(template, str):
             out.append(template)
         out.append(page)
-    for engraving in engravings_of(sliceform):
+    for engraving in _sheet_engravings(sliceform):
         out.extend(v for v in views_of(engraving) if v not in out)
         out.append(engraving)
     patches = patches_of(sliceform)
     for patch in patches:
-        sheet_patch = sheet_patch_of(patch)
-        if sheet_patch is not None:
-            out.extend(o for o in sheet_patch.InList if o.TypeId == "TechDraw::DrawViewPart" and o not in out)
-            out.append(sheet_patch)
+        for drawing in (engraving_of(patch), sheet_patch_of(patch)):
+            if drawing is not None:
+                out.extend(v for v in views_of(drawing) if v not in out)
+                out.append(drawing)
     out.extend(patches)
     return out
 
@@ -205,27 +229,30 @@ class SheetPatch(_Child):
 
 
 class Engraving(_Child):
-    """What is engraved on one sheet: the strokes of every patch on it, in sheet millimetres,
-    on the sheet's box (_on_sheet), for a view of its own."""
+    """What is engraved on one patch (its id, partner labels and leaders) as it lies on its
+    sheet, in sheet millimetres on the sheet's box (_on_sheet), for a view of its own. One
+    a patch, not one a sheet: TechDraw looks for faces among a view's edges at a cost that
+    grows with the square of their number, and a sheet's labels made its engraving view
+    take 80 % of an edit's recompute (docs/decisions.md)."""
 
     Type = "SliceformEngraving"
     PROPERTIES = (
-        ("App::PropertyLink", "Sliceform", "Engraving", QT_TRANSLATE_NOOP("App::Property", "The sliceform whose labels these are")),
-        ("App::PropertyInteger", "SheetIndex", "Engraving", QT_TRANSLATE_NOOP("App::Property", "Which sheet of the layout")),
+        ("App::PropertyLink", "Patch", "Engraving", QT_TRANSLATE_NOOP("App::Property", "The patch whose labels these are")),
     )
 
     def execute(self, obj):
-        sliceform = obj.Sliceform
+        patch = obj.Patch
+        sliceform = getattr(patch, "Sliceform", None)
         if not is_sliceform(sliceform):
-            raise ValueError(QT_TRANSLATE_NOOP("Sliceform", "this engraving's sliceform was deleted"))
-        sheets = sliceform.Proxy.sheets(sliceform)
-        if obj.SheetIndex >= len(sheets["sheets"]):
+            raise ValueError(QT_TRANSLATE_NOOP("Sliceform", "this engraving's patch or sliceform was deleted"))
+        patches = sliceform.Proxy.flat_patches(sliceform)
+        drawing = sliceform.Proxy.sheet_drawings(sliceform).get(patches[patch.Index]["id"]) if patch.Index < len(patches) else None
+        if drawing is None:
             return  # left over from a larger design until the sync that follows removes it
-        built = (sliceform.Proxy.key, obj.SheetIndex)
+        built = (sliceform.Proxy.key, patch.Index)
         if getattr(self, "built", None) == built and not obj.Shape.isNull():
             return
-        strokes = [s for p in sheets["sheets"][obj.SheetIndex] for s in geometry.patch_engraving(p)]
-        obj.Shape = _on_sheet(strokes, sheets)
+        obj.Shape = _on_sheet(geometry.patch_engraving(drawing), sliceform.Proxy.sheets(sliceform))
         self.built = built
 
 
@@ -293,20 +320,22 @@ def _new_page(doc, sliceform, index):
     return page
 
 
-def _new_engraving(doc, sliceform, page):
-    """A page's engraving and its view, named ..._Engrave: TechDraw's DXF writes each view on
-    a layer named after it, so a laser's software can map that layer to engraving."""
-    obj = doc.addObject("Part::FeaturePython", "{}_Engraving{:02d}".format(sliceform.Name, page.SheetIndex + 1))
+def _new_engraving(doc, patch):
+    obj = doc.addObject("Part::FeaturePython", patch.Name + "_Engraving")
     Engraving(obj)
-    obj.Sliceform = sliceform
-    obj.SheetIndex = page.SheetIndex
+    obj.Patch = patch
     if FreeCAD.GuiUp:
         from sliceform_gui import view_provider
 
         view_provider.ViewProviderSheetPatch(obj.ViewObject)
         obj.ViewObject.Visibility = False
-    view = _new_view(doc, page, obj, "{}_Sheet{:02d}_Engrave".format(sliceform.Name, page.SheetIndex + 1))
-    return obj, view
+    return obj
+
+
+def _engrave_view_name(patch):
+    """..._Engrave: TechDraw's DXF writes each view on a layer named after it, so a laser's
+    software can map every layer ending so to engraving."""
+    return patch.Name + "_Engrave"
 
 
 def _centre(view, sheets):
@@ -446,14 +475,17 @@ def shown(sliceform):
         for view in page.Views:
             page_of_view[view.Name] = page.SheetIndex
     for patch in patches:
-        sheet_patch = sheet_patch_of(patch)
-        views = [] if sheet_patch is None else [o for o in sheet_patch.InList if o.TypeId == "TechDraw::DrawViewPart"]
-        sheets.append(page_of_view.get(views[0].Name, -1) if len(views) == 1 else -2)
-        centres.append((round(views[0].X.Value, 6), round(views[0].Y.Value, 6)) if views else None)
-    # An engraving counts when its one view is the last on its page (drawn on top).
-    last = {p.SheetIndex: p.Views[-1] for p in pages if p.Views}
-    engraved = {e.SheetIndex for e in engravings_of(sliceform) if views_of(e) == [last.get(e.SheetIndex)]}
-    pages = [(p.Label, getattr(p, "Sheet", ""), p.SheetIndex in engraved) for p in pages]
+        # A patch shows on a sheet when its drawing and its engraving each have one view,
+        # both on that sheet's page, both centred on it.
+        drawings = [sheet_patch_of(patch), engraving_of(patch)]
+        views = [views_of(d) if d is not None else [] for d in drawings]
+        where = {page_of_view.get(v[0].Name, -1) for v in views if len(v) == 1}
+        at = {(round(v[0].X.Value, 6), round(v[0].Y.Value, 6)) for v in views if v}
+        sheets.append(where.pop() if all(len(v) == 1 for v in views) and len(where) == 1 else -2)
+        centres.append(at.pop() if len(at) == 1 else None)
+    pages = [(p.Label, getattr(p, "Sheet", ""), _drawn_in_order(p)) for p in pages]
+    if _sheet_engravings(sliceform):
+        pages.append(None)  # an older document's engravings are still there
     return ids, sheets, pages, centres
 
 
@@ -481,9 +513,9 @@ def sync(sliceform, recompute=True):
     patches = patches_of(sliceform)
     extra = patches[len(ids):]
     for patch in extra:
-        sheet_patch = sheet_patch_of(patch)
-        if sheet_patch is not None:
-            remove_objects(doc, [o for o in sheet_patch.InList if o.TypeId == "TechDraw::DrawViewPart"] + [sheet_patch])
+        for drawing in (engraving_of(patch), sheet_patch_of(patch)):
+            if drawing is not None:
+                remove_objects(doc, views_of(drawing) + [drawing])
     remove_objects(doc, extra)
     patches = patches[: len(ids)]
     while len(patches) < len(ids):
@@ -504,43 +536,36 @@ def sync(sliceform, recompute=True):
             page.Template.Template = template_for(sheets)
             page.Sheet = _sheet_text(sheets)
 
-    views = []
+    # A whole sheet's engravings, as earlier documents have them, give way to a patch's.
+    for engraving in _sheet_engravings(sliceform):
+        remove_objects(doc, views_of(engraving) + [engraving])
+
+    def view_on(page, source, name):
+        """The one view of source, on page (made or moved there)."""
+        found = views_of(source)
+        remove_objects(doc, found[1:])
+        view = found[0] if found else _new_view(doc, page, source, name)
+        owner = [p for p in pages if view in p.Views]
+        if owner != [page]:
+            for other in owner:
+                other.removeView(view)
+            page.addView(view)
+        _centre(view, sheets)
+        return view
+
+    views, engraved = [], []
     for patch, patch_id, s in zip(patches, ids, sheet_index):
         sheet_patch = sheet_patch_of(patch) or _new_sheet_patch(doc, patch)
-        found = [o for o in sheet_patch.InList if o.TypeId == "TechDraw::DrawViewPart"]
-        for view in found[1:]:
-            remove_objects(doc, [view])
-        view = found[0] if found else _new_view(doc, pages[s], sheet_patch, patch.Name + "_View")
-        owner = [p for p in pages if view in p.Views]
-        if owner != [pages[s]]:
-            for page in owner:
-                page.removeView(view)
-            pages[s].addView(view)
-        _centre(view, sheets)
-        views.append((patch, sheet_patch, view))
-    # An engraving per page (documents made before engravings get theirs here).
-    engravings = engravings_of(sliceform)
-    for engraving in engravings:
-        if engraving.SheetIndex >= sheet_count:
-            remove_objects(doc, views_of(engraving) + [engraving])
-    have = {e.SheetIndex: e for e in engravings if e.SheetIndex < sheet_count}
-    engraved = []
+        views.append((patch, sheet_patch, view_on(pages[s], sheet_patch, patch.Name + "_View")))
+        engraving = engraving_of(patch) or _new_engraving(doc, patch)
+        engraved.append((engraving, view_on(pages[s], engraving, _engrave_view_name(patch))))
+    # Engravings after every patch view of their page: a page draws its views in this
+    # order, and each patch view's white face would hide the labels of one drawn before it.
     for page in pages:
-        engraving = have.get(page.SheetIndex)
-        if engraving is None:
-            engraving, view = _new_engraving(doc, sliceform, page)
-        else:
-            found = views_of(engraving)
-            remove_objects(doc, found[1:])
-            view = found[0] if found else _new_view(doc, page, engraving, "{}_Sheet{:02d}_Engrave".format(
-                sliceform.Name, page.SheetIndex + 1))
-        _centre(view, sheets)
-        # Last on its page: a page draws its views in this order, and each patch view's
-        # white face would hide the labels of an engraving drawn before it.
-        if page.Views[-1] != view:
-            page.removeView(view)
-            page.addView(view)
-        engraved += [engraving, view]
+        if not _drawn_in_order(page):
+            for view in engraving_views(page):
+                page.removeView(view)
+                page.addView(view)
 
     # Labels go through a temporary name first: FreeCAD keeps labels unique, and a label
     # taken by a sibling for a moment would come out renumbered ("U002" for U1).
@@ -553,8 +578,8 @@ def sync(sliceform, recompute=True):
             (sheet_patch, "{} on sheet {}".format(patch_id, s + 1)),
             (view, patch_id),
         ]
-    labels += [(e, "{} engraving {}".format(sliceform.Label, e.SheetIndex + 1)) for e in engraved[::2]]
-    labels += [(v, "engraving {}".format(e.SheetIndex + 1)) for e, v in zip(engraved[::2], engraved[1::2])]
+    for (engraving, view), patch_id, s in zip(engraved, ids, sheet_index):
+        labels += [(engraving, "{} engraving on sheet {}".format(patch_id, s + 1)), (view, "{} engraving".format(patch_id))]
     labels = [(obj, label) for obj, label in labels if obj.Label != label]
     for obj, _label in labels:
         obj.Label = obj.Name + "_"
@@ -563,6 +588,7 @@ def sync(sliceform, recompute=True):
 
     # The new and changed children are built now, by a recompute of the document (none
     # can run inside another: then each is built alone and stays marked for recompute).
+    engraved = [o for pair in engraved for o in pair]
     changed = [p.Template for p in pages] + [o for v in views for o in v] + engraved + pages
     if recompute:
         doc.recompute([o for o in changed if "Touched" in o.State])
@@ -573,7 +599,7 @@ def sync(sliceform, recompute=True):
                 obj.recompute()
     # The tree asks a parent for its children when the parent changes; these link to it,
     # so it has not. ChildCount is an output: setting it marks nothing for recompute.
-    sliceform.ChildCount = len(patches) + len(pages) + len(engraved) // 2
+    sliceform.ChildCount = len(patches) + len(pages) + len(engraved) // 2  # and engravings
     return True
 
 

@@ -42,7 +42,7 @@ class ViewProviderSliceform(_Stateless):
         from sliceform_app import children
 
         obj = self.Object
-        return children.pages_of(obj) + children.patches_of(obj) + children.engravings_of(obj)
+        return children.pages_of(obj) + children.patches_of(obj)
 
     def onDelete(self, vobj, subelements):
         """Deletes the children with the feature (in the same Delete step) and shows the
@@ -89,8 +89,8 @@ class ViewProviderPatch(_Stateless):
     def claimChildren(self):
         from sliceform_app import children
 
-        sheet_patch = children.sheet_patch_of(self.Object)
-        return [sheet_patch] if sheet_patch is not None else []
+        drawings = [children.sheet_patch_of(self.Object), children.engraving_of(self.Object)]
+        return [d for d in drawings if d is not None]
 
 
 class ViewProviderSheetPatch(_Stateless):

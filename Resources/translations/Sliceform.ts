@@ -5,42 +5,37 @@
 <context>
     <name>App::Property</name>
     <message>
-        <location filename="../../App/sliceform_app/children.py" line="153"/>
+        <location filename="../../App/sliceform_app/children.py" line="177"/>
         <source>The sliceform this patch belongs to</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../App/sliceform_app/children.py" line="153"/>
+        <location filename="../../App/sliceform_app/children.py" line="177"/>
         <source>Position of the patch in the design</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../App/sliceform_app/children.py" line="153"/>
+        <location filename="../../App/sliceform_app/children.py" line="177"/>
         <source>The id engraved on the patch</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../App/sliceform_app/children.py" line="187"/>
+        <location filename="../../App/sliceform_app/children.py" line="211"/>
         <source>The patch shown on its sheet</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../App/sliceform_app/children.py" line="212"/>
-        <source>The sliceform whose labels these are</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location filename="../../App/sliceform_app/children.py" line="279"/>
+        <location filename="../../App/sliceform_app/children.py" line="306"/>
         <source>Which sheet of the layout</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../App/sliceform_app/children.py" line="277"/>
+        <location filename="../../App/sliceform_app/children.py" line="304"/>
         <source>The sliceform whose sheet this page shows</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../App/sliceform_app/children.py" line="281"/>
+        <location filename="../../App/sliceform_app/children.py" line="308"/>
         <source>The sheet&apos;s size and margin</source>
         <translation type="unfinished"></translation>
     </message>
@@ -244,6 +239,11 @@
         <source>degrees between the families in the 3D assembly: 90 is popped up, small angles fold it flat</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <location filename="../../App/sliceform_app/children.py" line="239"/>
+        <source>The patch whose labels these are</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>Sliceform</name>
@@ -348,18 +348,13 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../App/sliceform_app/children.py" line="161"/>
+        <location filename="../../App/sliceform_app/children.py" line="185"/>
         <source>this patch&apos;s sliceform was deleted: delete the patch too</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../App/sliceform_app/children.py" line="195"/>
+        <location filename="../../App/sliceform_app/children.py" line="219"/>
         <source>this drawing&apos;s patch or sliceform was deleted</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location filename="../../App/sliceform_app/children.py" line="220"/>
-        <source>this engraving&apos;s sliceform was deleted</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -368,12 +363,12 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../App/sliceform_app/feature.py" line="334"/>
+        <location filename="../../App/sliceform_app/feature.py" line="351"/>
         <source>cannot be built: </source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../App/sliceform_app/feature.py" line="334"/>
+        <location filename="../../App/sliceform_app/feature.py" line="351"/>
         <source>see the report</source>
         <translation type="unfinished"></translation>
     </message>
@@ -485,6 +480,11 @@
     <message>
         <location filename="../../build/translations/schema_strings.py" line="49"/>
         <source>Fold angle</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../App/sliceform_app/children.py" line="247"/>
+        <source>this engraving&apos;s patch or sliceform was deleted</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

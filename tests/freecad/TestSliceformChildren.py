@@ -69,10 +69,18 @@ class TestSliceformChildren(unittest.TestCase):
         self.assertEqual(len(patches), sliceform.PatchCount)
         self.assertEqual(len(pages), sliceform.SheetCount)
         self.assertEqual(sum(len(children.patch_views(p)) for p in pages), sliceform.PatchCount)
-        self.assertEqual([len(children.views_of(e)) for e in children.engravings_of(sliceform)], [1] * len(pages))
-        # Drawn last on its page, so the patch views' white faces do not hide the labels.
-        self.assertEqual([p.Views[-1] for p in pages], [children.views_of(e)[0] for e in children.engravings_of(sliceform)])
-        self.assertEqual([e.SheetIndex for e in children.engravings_of(sliceform)], list(range(len(pages))))
+        # An engraving per patch, its one view on the patch's page, drawn after every patch
+        # view of that page, so the patch views' white faces do not hide the labels.
+        engravings = children.engravings_of(sliceform)
+        self.assertEqual([e.Patch for e in engravings], patches)
+        self.assertEqual([len(children.views_of(e)) for e in engravings], [1] * len(patches))
+        for patch, engraving in zip(patches, engravings):
+            page = [p for p in pages if children.views_of(engraving)[0] in p.Views]
+            self.assertEqual(page, [p for p in pages if children.views_of(children.sheet_patch_of(patch))[0] in p.Views])
+        for page in pages:
+            drawn = page.Views
+            self.assertEqual(drawn, children.patch_views(page) + children.engraving_views(page))
+            self.assertEqual(len(children.patch_views(page)), len(children.engraving_views(page)))
         report = json.loads(sliceform.Proxy.report_json(sliceform))
         self.assertEqual([p.PatchId for p in patches], [f["id"] for f in sliceform.Proxy.flat_patches(sliceform)])
         self.assertEqual(sorted(p.PatchId for p in patches), sorted(p["id"] for p in report["patches"]))
@@ -296,7 +304,7 @@ class TestSliceformChildren(unittest.TestCase):
 
     def test_techdraw_dxf_keeps_arcs_and_puts_the_engraving_on_a_layer_of_its_own(self):
         """TechDraw's own DXF of a sheet whose patches have a round hole: the hole's arcs
-        are ARC entities, and the labels are on the page's ..._Engrave layer, apart from
+        are ARC entities, and the labels are on ..._Engrave layers (one a patch), apart from
         the cuts (a layer per patch view), so a laser's software can map them."""
         import collections
         import re
@@ -325,17 +333,20 @@ class TestSliceformChildren(unittest.TestCase):
         entities = text[text.index("ENTITIES"):]
         found = collections.Counter(
             (layer, kind) for kind, layer in re.findall(r"\n  0\n(LINE|ARC|CIRCLE|SPLINE|LWPOLYLINE)\n(?:.*\n)*?  8\n([^\n]+)\n", entities))
-        engrave_layer = "{}_Sheet01_Engrave".format(sliceform.Name)
+        engrave_layers = {v.Name for v in children.engraving_views(page)}
+        self.assertTrue(engrave_layers and all(name.endswith("_Engrave") for name in engrave_layers), engrave_layers)
         cut_layers = {v.Name for v in children.patch_views(page)}
+        self.assertFalse(any(name.endswith("_Engrave") for name in cut_layers), cut_layers)
         self.assertGreater(sum(n for (layer, kind), n in found.items() if layer in cut_layers and kind in ("ARC", "CIRCLE")), 0, found)
-        self.assertGreater(sum(n for (layer, _kind), n in found.items() if layer == engrave_layer), 20, found)
-        self.assertEqual({layer for layer, _kind in found} - cut_layers - {engrave_layer, "0"}, set(), found)
+        self.assertGreater(sum(n for (layer, _kind), n in found.items() if layer in engrave_layers), 20, found)
+        self.assertEqual({layer for layer, _kind in found} - cut_layers - engrave_layers - {"0"}, set(), found)
         # The cut layers hold the cuts alone: as many curves as the sheet patches' edges.
         cuts = sum(len(v.Source[0].Shape.Edges) for v in children.patch_views(page))
         self.assertEqual(sum(n for (layer, _kind), n in found.items() if layer in cut_layers), cuts)
         engraved = [p for p in sliceform.Proxy.sheets(sliceform)["sheets"][0]]
         strokes = sum(len(s) - 1 for p in engraved for s in p["engrave"] if len(s) > 1)
-        self.assertEqual(len(children.engravings_of(sliceform)[0].Shape.Edges), strokes)
+        self.assertEqual(sum(len(v.Source[0].Shape.Edges) for v in children.engraving_views(page)), strokes)
+        self.assertEqual(sum(n for (layer, _kind), n in found.items() if layer in engrave_layers), strokes)
 
     def test_a_new_sheet_size_moves_the_views_and_the_template(self):
         """Same patches on the same number of sheets, another sheet size: the pages get a

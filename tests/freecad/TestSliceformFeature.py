@@ -109,8 +109,9 @@ class TestSliceformFeature(unittest.TestCase):
         pages = children.pages_of(sliceform)
         self.assertEqual(len(pages), sliceform.SheetCount)
         self.assertEqual(sum(len(children.patch_views(p)) for p in pages), sliceform.PatchCount)
-        # One more view a page: its engraving, a layer of its own in TechDraw's DXF.
-        self.assertEqual([len(p.Views) - len(children.patch_views(p)) for p in pages], [1] * len(pages))
+        # Each patch's engraving has a view of its own: a layer of its own in TechDraw's DXF.
+        self.assertEqual(sum(len(children.engraving_views(p)) for p in pages), sliceform.PatchCount)
+        self.assertEqual([len(p.Views) for p in pages], [2 * len(children.patch_views(p)) for p in pages])
         page = pages[0]
         self.assertEqual(page.TypeId, "TechDraw::DrawPage")
         self.assertTrue(page.Views)

@@ -125,7 +125,7 @@ try:
     assert not page_windows(), "a page opened by itself on Create"
     before = snapshot(doc, sliceform)
     assert before["touched"] == [], before["touched"]
-    # The tree: pages, patches and engravings under the sliceform, each patch's drawing under it.
+    # The tree: pages and patches under the sliceform, each patch's drawing and engraving under it.
     tree = max(FreeCADGui.getMainWindow().findChildren(QtGui.QTreeWidget), key=lambda t: t.topLevelItemCount())
     wait()
     tree.expandAll()
@@ -135,11 +135,12 @@ try:
         FreeCADGui.getMainWindow().grab().save(png.replace(".png", "_tree.png"))
     item = tree_item(tree, sliceform.Label)
     under = sorted(item.child(i).text(0) for i in range(item.childCount()))
-    expected = sorted([o.Label for o in children.pages_of(sliceform) + children.patches_of(sliceform) + children.engravings_of(sliceform)])
+    expected = sorted([o.Label for o in children.pages_of(sliceform) + children.patches_of(sliceform)])
     assert under == expected, "under the sliceform in the tree: {}".format(under)
     patch = children.patches_of(sliceform)[0]
     item = tree_item(tree, patch.Label)
-    assert [item.child(i).text(0) for i in range(item.childCount())] == [children.sheet_patch_of(patch).Label]
+    assert [item.child(i).text(0) for i in range(item.childCount())] == [
+        children.sheet_patch_of(patch).Label, children.engraving_of(patch).Label]
 
     # 1. Task panel: a Recompute that changes the patch and sheet counts, then Cancel.
     FreeCADGui.Selection.clearSelection()
@@ -289,7 +290,7 @@ try:
     wait()
     tree = max(FreeCADGui.getMainWindow().findChildren(QtGui.QTreeWidget), key=lambda t: t.topLevelItemCount())
     item = tree_item(tree, sliceform.Label)
-    assert item.childCount() == sliceform.PatchCount + 2 * sliceform.SheetCount, "tree children after reopen"  # patches, pages, engravings
+    assert item.childCount() == sliceform.PatchCount + sliceform.SheetCount, "tree children after reopen"  # patches, pages
     outcome = "ok"
 except Exception:
     outcome = traceback.format_exc()

@@ -80,7 +80,9 @@ try:
     assert len(children.patches_of(sliceform)) == sliceform.PatchCount, "patches missing"
     assert children.pages_of(sliceform), "pages missing"
     claimed = sliceform.ViewObject.Proxy.claimChildren()
-    assert set(children.pages_of(sliceform) + children.patches_of(sliceform) + children.engravings_of(sliceform)) == set(claimed), "tree children"
+    assert set(children.pages_of(sliceform) + children.patches_of(sliceform)) == set(claimed), "tree children"
+    patch = children.patches_of(sliceform)[0]
+    assert patch.ViewObject.Proxy.claimChildren() == [children.sheet_patch_of(patch), children.engraving_of(patch)], "patch children"
     assert not torus.ViewObject.Visibility, "the source was not hidden"
 
     FreeCADGui.Selection.clearSelection()
