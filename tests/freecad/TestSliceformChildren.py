@@ -374,6 +374,40 @@ class TestSliceformChildren(unittest.TestCase):
             sheet_patch = children.sheet_patch_of(patch)
             self.assertAlmostEqual(sheet_patch.Shape.BoundBox.YMax, 500)  # the corner vertex
 
+    def test_a_sheets_engraving_from_an_earlier_document_gives_way(self):
+        """A document made when each page had one engraving for the whole sheet (linking the
+        sliceform, with a SheetIndex): saved and opened, its next recompute leaves an
+        engraving per patch and none per sheet."""
+        from sliceform_app import children
+
+        _box, cut = self.box_with_hole(60)
+        sliceform = self.create(cut)
+        page = children.pages_of(sliceform)[0]
+        old = self.doc.addObject("Part::FeaturePython", "Sliceform_Engraving01")
+        children.Engraving(old)
+        old.addProperty("App::PropertyLink", "Sliceform", "Engraving", "")
+        old.addProperty("App::PropertyInteger", "SheetIndex", "Engraving", "")
+        old.Sliceform = sliceform
+        view = self.doc.addObject("TechDraw::DrawViewPart", "Sliceform_Sheet01_Engrave")
+        page.addView(view)
+        view.Source = [old]
+        with children.held():
+            self.doc.recompute()
+        path = os.path.join(tempfile.mkdtemp(), "sheet_engraving.FCStd")
+        self.doc.saveAs(path)
+        name = sliceform.Name
+        FreeCAD.closeDocument(self.doc.Name)
+        self.doc = FreeCAD.openDocument(path)
+        self.doc.UndoMode = 1
+        sliceform = self.doc.getObject(name)
+        self.doc.openTransaction("Recompute")
+        sliceform.touch()
+        self.doc.recompute()
+        self.doc.commitTransaction()
+        self.assertIsNone(self.doc.getObject("Sliceform_Engraving01"))
+        self.assertIsNone(self.doc.getObject("Sliceform_Sheet01_Engrave"))
+        self.check_children(sliceform)
+
     def test_older_document_with_child_links_opens_and_migrates(self):
         """A document saved when the feature linked its children (PatchGroup, PatchSketches,
         Pages, SheetGroup): it opens, the links go, the next recompute makes the new
