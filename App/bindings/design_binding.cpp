@@ -181,6 +181,8 @@ py::list flatPatches(const PyDesign& self) {
     d["loops"] = loopsOf(flat.cut);
     std::vector<Stroke> strokes = flat.name.strokes;
     for (const Label& l : flat.partners) strokes.insert(strokes.end(), l.strokes.begin(), l.strokes.end());
+    strokes.insert(strokes.end(), flat.stepLabel.strokes.begin(), flat.stepLabel.strokes.end());
+    d["step"] = flat.step;
     d["engrave"] = strokesOf(strokes);
     out.append(d);
   }

@@ -141,7 +141,10 @@ void printLayout(const SheetLayout& l) {
               100 * l.packing.utilisation, l.shelf.sheets, 100 * l.shelf.utilisation);
   std::printf("labels     %zu patch ids, %d partner ids at slots", l.patches.size(), partners);
   if (leaders > 0) std::printf(" (%d with a leader line to a slot too crowded for it)", leaders);
+  int steps = 0;
+  for (const FlatPatch& p : l.patches) steps += p.step > 0 && p.stepLabel.height <= 0;
   std::printf("; partner_labels_missing %d", missing);
+  if (steps > 0) std::printf("; %d patch(es) with no room for their step number", steps);
   if (missing > 0) std::printf(" (no room to read as the slot's on %s)", without.c_str());
   std::printf("\n");
 }

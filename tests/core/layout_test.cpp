@@ -248,6 +248,33 @@ TEST(Layout, LabelsSitOnPaperAndClearOfEachOther) {
   EXPECT_EQ(partners, 2 * meeting);
 }
 
+// Each patch carries its assembly step ("#5" for the fifth in assembly_order) beside its id,
+// so whoever assembles finds the next patch on the sheets: on paper, clear of every other
+// label, and every step from 1 to the patch count once.
+TEST(Layout, StepNumbersBesideTheIds) {
+  const Design& d = sphere();
+  const std::vector<int>& order = d.realization.assemblyOrder;
+  ASSERT_EQ(order.size(), d.layout.patches.size());
+  std::vector<int> steps;
+  for (const FlatPatch& p : d.layout.patches) {
+    const int step = static_cast<int>(std::find(order.begin(), order.end(), p.patch) - order.begin()) + 1;
+    EXPECT_EQ(p.step, step) << p.id;
+    EXPECT_EQ(p.stepLabel.text, "#" + std::to_string(step)) << p.id;
+    ASSERT_GE(p.stepLabel.height, kMinLabelHeight - 1e-9) << p.id;
+    EXPECT_FALSE(p.stepLabel.strokes.empty()) << p.id;
+    EXPECT_LT(box(p.stepLabel).subtract(p.outline).area(), 1e-9) << p.id << ": step off the paper";
+    std::vector<Label> others = {p.name};
+    others.insert(others.end(), p.partners.begin(), p.partners.end());
+    for (const Label& o : others)
+      EXPECT_LT(box(p.stepLabel).intersect(box(o)).area(), 1e-9) << p.id << ": step on " << o.text;
+    // Near its id: within a few id heights.
+    EXPECT_LT(distance(p.stepLabel.at, p.name.at), 4 * p.name.height + 10) << p.id;
+    steps.push_back(p.step);
+  }
+  std::sort(steps.begin(), steps.end());
+  for (size_t i = 0; i < steps.size(); ++i) EXPECT_EQ(steps[i], static_cast<int>(i) + 1);
+}
+
 void expectNoOverlaps(const SheetLayout& l) {
   ASSERT_EQ(l.packing.placements.size(), l.patches.size());
   std::vector<Region2d> onSheet;

@@ -8,6 +8,7 @@
 #include <TopoDS.hxx>
 #include <TopoDS_Edge.hxx>
 #include <TopoDS_Wire.hxx>
+#include <algorithm>
 
 #include <cmath>
 
@@ -165,8 +166,12 @@ FlatPatch flattenPatch(const Design& d, int k) {
   flat.cut = cutLoops(kerfCompensated(d.patches[k].shape, d.realization.params.kerf),
                       PlaneMap{plane.xAxis, plane.yAxis});
   const LabelPaper paper = labelPaper(flat.outline);
-  PatchLabels labels = labelPatch(paper, flat.id, partnerSpots(d, k));
+  const std::vector<int>& order = d.realization.assemblyOrder;
+  const auto at = std::find(order.begin(), order.end(), k);
+  flat.step = at == order.end() ? 0 : static_cast<int>(at - order.begin()) + 1;
+  PatchLabels labels = labelPatch(paper, flat.id, partnerSpots(d, k), flat.step);
   flat.name = std::move(labels.name);
+  flat.stepLabel = std::move(labels.step);
   flat.partners = std::move(labels.partners);
   flat.partnersMissing = labels.missing;
   for (const Label& l : flat.partners) flat.partnersOnLeaders += !l.leader.empty();

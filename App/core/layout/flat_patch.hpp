@@ -51,6 +51,8 @@ struct FlatPatch {
   std::vector<Label> partners;  // the partner's id beside each slot
   int partnersMissing = 0;      // slots with no room for a partner label
   int partnersOnLeaders = 0;    // partner labels that stand off, with a leader to their slot
+  int step = 0;                 // its place in the assembly order, 1-based (0: none)
+  Label stepLabel;              // "#step" beside the id (no strokes when it has no room)
 };
 
 // Every patch of a design laid flat and labelled; `kerf` moves the cut paths as

@@ -10,8 +10,8 @@ namespace sliceform {
 namespace {
 
 // Glyphs on a 4 x 6 grid, baseline at y = 0: only what patch ids use (U, V, digits), what
-// the sheets' scale marks say ("50 mm", "1/3") and the fit coupon's marks ("0.25", "E2.0",
-// "F2.0"). Seven-segment shapes stay legible at 1.5 mm and engrave
+// the sheets' scale marks say ("50 mm", "1/3"), the fit coupon's marks ("0.25", "E2.0",
+// "F2.0") and assembly steps ("#12"). Seven-segment shapes stay legible at 1.5 mm and engrave
 // quickly.
 using Glyph = std::vector<std::vector<Vec2>>;
 const std::map<char, Glyph>& font() {
@@ -35,6 +35,7 @@ const std::map<char, Glyph>& font() {
       {'.', {{{1.5, 0}, {2.5, 0}, {2.5, 1}, {1.5, 1}, {1.5, 0}}}},
       {'E', {{{4, 6}, {0, 6}, {0, 0}, {4, 0}}, {{0, 3}, {3, 3}}}},
       {'F', {{{4, 6}, {0, 6}, {0, 0}}, {{0, 3}, {3, 3}}}},
+      {'#', {{{1, 0}, {1.5, 6}}, {{2.5, 0}, {3, 6}}, {{0, 2}, {4, 2}}, {{0, 4}, {4, 4}}}},
   };
   return glyphs;
 }
@@ -293,6 +294,35 @@ Label placeName(const Region2d& paper, const std::string& id) {
 std::vector<Label> placePartners(const Region2d& paper, const std::vector<LabelSpot>& spots,
                                  const std::vector<Label>& taken, double maxHeight, int& missing) {
   return placePartners(labelPaper(paper), spots, taken, maxHeight, missing);
+}
+
+Label placeStep(const LabelPaper& paper, const std::string& text, const Label& name,
+                const std::vector<Label>& taken) {
+  std::vector<Label> all = taken;
+  all.push_back(name);
+  std::vector<Box2> leaders;  // boxes keep off the leaders (a segment's box will do)
+  for (const Label& l : taken)
+    for (size_t i = 1; i < l.leader.size(); ++i)
+      leaders.push_back(
+          {{std::min(l.leader[i - 1].x, l.leader[i].x), std::min(l.leader[i - 1].y, l.leader[i].y)},
+           {std::max(l.leader[i - 1].x, l.leader[i].x), std::max(l.leader[i - 1].y, l.leader[i].y)},
+           false});
+  const Box2 patch = paper.inner.bounds();
+  const double top = std::max(kMinLabelHeight, name.height > 0 ? std::min(name.height / 2, 3.5) : 3.5);
+  for (double height = top;; height = std::max(kMinLabelHeight, height * 0.8)) {
+    for (const bool vertical : {false, true}) {
+      const Vec2 half = halfSize(text, height, vertical),
+                 id = halfSize(name.text, name.height, name.vertical);
+      // Under the id reading the same way, nearest first; the patch's box when no id is set.
+      const Vec2 below = name.height > 0
+                             ? Vec2{name.at.x, name.at.y - id.y - kGap - half.y}
+                             : Vec2{(patch.min.x + patch.max.x) / 2, (patch.min.y + patch.max.y) / 2};
+      const Region2d room = freeFor(paper.inner, all, half, patch, leaders);
+      if (!room.empty()) return setLabel(text, nearestPoint(room, below), height, vertical);
+    }
+    if (height <= kMinLabelHeight) break;
+  }
+  return Label{text, {}, 0, false, {}, {}};
 }
 
 Label placeName(const LabelPaper& paper, const std::string& id, const std::vector<Label>& taken) {

@@ -56,13 +56,22 @@ std::vector<Label> placePartners(const LabelPaper& paper, const std::vector<Labe
 std::vector<Label> placePartners(const Region2d& paper, const std::vector<LabelSpot>& spots,
                                  const std::vector<Label>& taken, double maxHeight, int& missing);
 
-// A patch's labels: its id and, at each slot, its partner's (placed again in other orders
-// when a slot is left without); `missing` counts the slots left without one.
+// The patch's assembly step ("#5") beside its id: below it where there is room, else
+// anywhere on the patch, up to half the id's height (3.5 mm at most) and down to 1 mm,
+// clear of `taken` labels and their leaders; empty strokes when no box of 1 mm fits.
+Label placeStep(const LabelPaper& paper, const std::string& text, const Label& name,
+                const std::vector<Label>& taken);
+
+// A patch's labels: its id, at each slot its partner's (placed again in other orders when a
+// slot is left without; `missing` counts the slots left without one), and its assembly step
+// when `step` > 0.
 struct PatchLabels {
   Label name;
   std::vector<Label> partners;
   int missing = 0;
+  Label step;
 };
-PatchLabels labelPatch(const LabelPaper& paper, const std::string& id, const std::vector<LabelSpot>& spots);
+PatchLabels labelPatch(const LabelPaper& paper, const std::string& id, const std::vector<LabelSpot>& spots,
+                       int step = 0);
 
 }  // namespace sliceform

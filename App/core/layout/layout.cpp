@@ -24,6 +24,7 @@ CutElement placed(CutElement e, const Placement& p) {
 std::vector<const Label*> labelsOf(const FlatPatch& patch) {
   std::vector<const Label*> labels{&patch.name};
   for (const Label& l : patch.partners) labels.push_back(&l);
+  if (patch.stepLabel.height > 0) labels.push_back(&patch.stepLabel);
   return labels;
 }
 

@@ -202,7 +202,10 @@ std::vector<Label> placePartners(const LabelPaper& paper, const std::vector<Labe
   return present(partnerLabels(paper.inner, spots, inOrder(spots.size()), taken, maxHeight), missing);
 }
 
-PatchLabels labelPatch(const LabelPaper& paper, const std::string& id, const std::vector<LabelSpot>& spots) {
+namespace {
+
+PatchLabels labelPartners(const LabelPaper& paper, const std::string& id,
+                          const std::vector<LabelSpot>& spots) {
   PatchLabels out;
   out.name = placeName(paper, id);
   // Partner ids scale with the patch id, which says how much room the patch has.
@@ -263,6 +266,15 @@ PatchLabels labelPatch(const LabelPaper& paper, const std::string& id, const std
   }
   out.missing = 0;
   out.partners = present(best, out.missing);
+  return out;
+}
+
+}  // namespace
+
+PatchLabels labelPatch(const LabelPaper& paper, const std::string& id, const std::vector<LabelSpot>& spots,
+                       int step) {
+  PatchLabels out = labelPartners(paper, id, spots);
+  if (step > 0) out.step = placeStep(paper, "#" + std::to_string(step), out.name, out.partners);
   return out;
 }
 

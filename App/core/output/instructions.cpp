@@ -113,7 +113,8 @@ void cover(cairo_t* cr, const Design& d, const std::vector<Panel3>& panels, cons
   y = text(cr, "How", kMargin, y + 3, 4.5, width, true);
   text(
       cr,
-      "Cut every patch first and keep the ids readable. Then follow the steps: each adds one patch, orange "
+      "Cut every patch first and keep the ids readable; the number engraved beside each id (#5) is its "
+      "step. Then follow the steps: each adds one patch, orange "
       "in its picture. Its slots open at the top or at the bottom; slide it on so each slot meets the named "
       "partner's slot, until the slots' ends touch. Check the ids at each slot (the partner's id is engraved "
       "beside it) before you push.",

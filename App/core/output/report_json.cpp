@@ -131,6 +131,8 @@ json reportJson(const Model& model, const DesignParams& params, const Design& d)
          {"sheet", at.sheet + 1},
          {"placement", {{"x_mm", at.offset.x}, {"y_mm", at.offset.y}, {"rotation_deg", at.rotation}}},
          {"label", label(flat.name)},
+         {"step", flat.step},
+         {"step_label", label(flat.stepLabel)},
          {"partner_labels", flat.partners.size()},
          {"partner_labels_missing", flat.partnersMissing},
          {"partner_labels_on_leaders", flat.partnersOnLeaders}});
@@ -201,6 +203,9 @@ json reportJson(const Model& model, const DesignParams& params, const Design& d)
   doc["partner_labels"] = partners;
   doc["partner_labels_missing"] = missing;
   doc["partner_labels_on_leaders"] = leaders;  // of partner_labels: they stand off, a line leads to the slot
+  int steps = 0;
+  for (const FlatPatch& p : l.patches) steps += p.step > 0 && p.stepLabel.height <= 0;
+  doc["step_labels_missing"] = steps;  // patches with no room for their "#step" beside the id
   doc["cylinders"] = {{"u", a.uCylinders.size()},
                       {"v", a.vCylinders.size()},
                       {"uncovered_u", a.scaffold.uncoveredU},
