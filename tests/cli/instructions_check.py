@@ -42,6 +42,13 @@ def main():
             fail(f"{len(ids)} steps for {len(patches)} patches, or a patch twice or missing")
         if ids != order:
             fail("the steps are not in the report's assembly order")
+        # Each step marks the slots it names on the patch's own outline, with the partner's id:
+        # beyond the step headings, as many bare ids on the step pages as the steps name.
+        step_pages = "\f".join(text.split("\f")[1:])
+        named = sum(len(re.findall(r"[UV]\d+", ids_)) for ids_ in re.findall(r"onto ([UV0-9, ]+)\.", step_pages))
+        bare = len([w for w in step_pages.split() if re.fullmatch(r"[UV]\d+", w)])
+        if named == 0 or bare - len(ids) < named:
+            fail(f"{bare - len(ids)} slot marks on the patches' outlines for {named} slots named in the steps")
         pages = int(re.search(r"^Pages:\s+(\d+)$", subprocess.run(["pdfinfo", pdf], capture_output=True,
                                                                    text=True).stdout, re.M).group(1))
         if pages != 1 + (len(ids) + 5) // 6:

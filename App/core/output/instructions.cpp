@@ -5,6 +5,7 @@
 #include <cairo.h>
 
 #include <algorithm>
+#include <cmath>
 #include <memory>
 
 #include "output/cairo_file.hpp"
@@ -44,6 +45,62 @@ void drawPicture(cairo_t* cr, const Picture& p, double x, double y, double w, do
   cairo_scale(cr, scale, scale);
   cairo_set_source_surface(cr, image.get(), 0, 0);
   cairo_paint(cr);
+  cairo_restore(cr);
+}
+
+void highlightColour(cairo_t* cr) {
+  cairo_set_source_rgb(cr, ((kHighlight >> 16) & 255) / 255.0, ((kHighlight >> 8) & 255) / 255.0,
+                       (kHighlight & 255) / 255.0);
+}
+
+// The step's patch as it lies on its sheet (turned as placed there), fitted into w x h mm at
+// (x, y): its outline and slots in grey, and at each slot that goes onto a partner in this
+// step a dot in the highlight colour with that partner's id, where its partner label is
+// engraved: whoever assembles matches the picture's slots with the paper in hand.
+void drawFlatPatch(cairo_t* cr, const FlatPatch& flat, const Placement& placed,
+                   const std::vector<std::string>& onto, double x, double y, double w, double h) {
+  const Placement turn{0, {0, 0}, placed.rotation};
+  const SheetDrawing drawing = placedDrawing(flat, turn);
+  Box2 box;
+  for (const CutLoop& loop : drawing.cut)
+    for (const CutElement& e : loop)
+      for (const Vec2& q : sample(e, 0.5)) {
+        box.min = box.empty ? q : Vec2{std::min(box.min.x, q.x), std::min(box.min.y, q.y)};
+        box.max = box.empty ? q : Vec2{std::max(box.max.x, q.x), std::max(box.max.y, q.y)};
+        box.empty = false;
+      }
+  if (box.empty || w <= 0 || h <= 0) return;
+  const double scale = std::min(w / (box.max.x - box.min.x + 1e-9), h / (box.max.y - box.min.y + 1e-9));
+  // Sheet millimetres (y up) to the page (y down), centred in the box.
+  const double left = x + (w - (box.max.x - box.min.x) * scale) / 2;
+  const auto page = [&](Vec2 q) {
+    return Vec2{left + (q.x - box.min.x) * scale, y + (box.max.y - q.y) * scale};
+  };
+  cairo_save(cr);
+  cairo_set_line_width(cr, 0.2);
+  cairo_set_source_rgb(cr, 0.45, 0.45, 0.45);
+  for (const CutLoop& loop : drawing.cut) {
+    for (const CutElement& e : loop) {
+      const std::vector<Vec2> points = sample(e, 0.2 / scale);
+      for (size_t i = 0; i < points.size(); ++i) {
+        const Vec2 q = page(points[i]);
+        (i == 0 && &e == &loop.front() ? cairo_move_to : cairo_line_to)(cr, q.x, q.y);
+      }
+    }
+    cairo_close_path(cr);
+    cairo_stroke(cr);
+  }
+  for (const Label& l : flat.partners) {
+    if (std::find(onto.begin(), onto.end(), l.text) == onto.end()) continue;
+    const Vec2 q = page(turn.apply(l.at));
+    highlightColour(cr);
+    cairo_arc(cr, q.x, q.y, 1.2, 0, 2 * M_PI);
+    cairo_fill(cr);
+    cairo_select_font_face(cr, "sans-serif", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_BOLD);
+    cairo_set_font_size(cr, 2.6);
+    cairo_move_to(cr, q.x + 1.6, q.y + 0.9);
+    cairo_show_text(cr, l.text.c_str());
+  }
   cairo_restore(cr);
 }
 
@@ -154,7 +211,9 @@ std::vector<AssemblyStep> assemblySteps(const Design& d) {
 void writeInstructionsPdf(const Design& d, const std::vector<Panel3>& panels, const std::string& title,
                           const std::string& path) {
   const std::vector<AssemblyStep> steps = assemblySteps(d);
-  std::vector<int> panelOf(d.patches.size(), -1);
+  std::vector<int> panelOf(d.patches.size(), -1), flatIndex(d.patches.size(), -1);
+  for (size_t k = 0; k < d.layout.patches.size(); ++k)
+    flatIndex[d.layout.patches[k].patch] = static_cast<int>(k);
   for (size_t i = 0; i < panels.size(); ++i)
     if (panels[i].patch >= 0) panelOf[panels[i].patch] = static_cast<int>(i);
   writeAtomically(path, [&](const std::string& temporary) {
@@ -183,8 +242,18 @@ void writeInstructionsPdf(const Design& d, const std::vector<Panel3>& panels, co
         if (!step.through.empty()) how += "Slots through, onto " + joined(step.through) + ". ";
         if (!step.partnerCuts.empty()) how += "Uncut where " + joined(step.partnerCuts) + " is cut through. ";
         line = text(cr, how, x, line, 3, cellW - 4);
+        // The assembly so far on the left, the patch with the slots to engage on the right.
         const int p = step.patch >= 0 ? panelOf[step.patch] : -1;
-        if (p >= 0) drawPicture(cr, pictures.add(p), x, line, cellW - 4, y + cellH - line - 3);
+        const double pictureW = 0.62 * (cellW - 4), height = y + cellH - line - 3;
+        if (p >= 0) drawPicture(cr, pictures.add(p), x, line, pictureW, height);
+        const int k = flatIndex[step.patch];
+        if (k >= 0) {
+          std::vector<std::string> onto = step.fromTop;
+          onto.insert(onto.end(), step.fromBottom.begin(), step.fromBottom.end());
+          onto.insert(onto.end(), step.through.begin(), step.through.end());
+          drawFlatPatch(cr, d.layout.patches[k], d.layout.packing.placements[k], onto, x + pictureW + 2,
+                        line + 2, cellW - 6 - pictureW, height - 4);
+        }
         if (slot == kStepsPerPage - 1 || i + 1 == steps.size()) cairo_show_page(cr);
       }
     });
