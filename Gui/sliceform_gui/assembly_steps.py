@@ -29,6 +29,12 @@ class AssemblyStepsPanel:
         shown = [sliceform] + list(self.patches.values())
         self.saved = {o.Name: (o.ViewObject.Visibility, getattr(o.ViewObject, "ShapeColor", None)) for o in shown}
         self.colour = {p.PatchId: p.ViewObject.ShapeColor for p in self.patches.values()}
+        # Filled while stepping: in wireframe (a 2D object's default, and older documents')
+        # the highlight colour, a face colour, would not show.
+        self.modes = {p.Name: p.ViewObject.DisplayMode for p in self.patches.values()}
+        for p in self.patches.values():
+            if "Flat Lines" in p.ViewObject.listDisplayModes():
+                p.ViewObject.DisplayMode = "Flat Lines"
         self.form = QtGui.QWidget()
         self.form.setWindowTitle(translate("Sliceform", "Assembly steps"))
         layout = QtGui.QVBoxLayout(self.form)
@@ -71,6 +77,8 @@ class AssemblyStepsPanel:
             o.ViewObject.Visibility = visible
             if colour is not None:
                 o.ViewObject.ShapeColor = colour
+            if name in self.modes and o.ViewObject.DisplayMode != self.modes[name]:
+                o.ViewObject.DisplayMode = self.modes[name]
         current = None
 
     def getStandardButtons(self):

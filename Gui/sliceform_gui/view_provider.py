@@ -31,6 +31,9 @@ class ViewProviderSliceform(_Stateless):
         # Paper: light card colour, lit from both sides (the patches are faces, not solids).
         vobj.ShapeColor = (0.93, 0.88, 0.76)
         vobj.Lighting = "Two side"
+        # Paper, not a sketch: a 2D object shows as wireframe unless told otherwise.
+        if "Flat Lines" in vobj.listDisplayModes():
+            vobj.DisplayMode = "Flat Lines"
 
     def attach(self, vobj):
         self.Object = vobj.Object
@@ -79,6 +82,9 @@ class ViewProviderPatch(_Stateless):
         self.Object = vobj.Object
         vobj.ShapeColor = (0.93, 0.88, 0.76)
         vobj.Lighting = "Two side"
+        # Paper, not a sketch: a 2D object shows as wireframe unless told otherwise.
+        if "Flat Lines" in vobj.listDisplayModes():
+            vobj.DisplayMode = "Flat Lines"
 
     def attach(self, vobj):
         self.Object = vobj.Object

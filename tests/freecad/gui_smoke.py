@@ -115,6 +115,27 @@ try:
     assert all(abs(a - b) < 1e-3 for a, b in zip(colour, assembly_steps.HIGHLIGHT)), ("no highlight", colour)
     assert "Step 3 of" in panel.label.text() and order[2] in panel.label.text(), panel.label.text()
     assert not sliceform.ViewObject.Visibility, "the assembled sliceform hides the steps"
+    # A picture of step 3 for the README: the task panel beside the 3D view.
+    steps_png = png.replace(".png", "_steps.png")
+    view = FreeCADGui.ActiveDocument.ActiveView
+    view.viewIsometric()
+    view.fitAll()
+    view.saveImage(steps_png, 700, 560, "White")
+    # The highlight shows in the view, not only in a property: orange pixels (red well
+    # above green; neither the paper colour, the grey torus nor white comes near).
+    image = QtGui.QImage(steps_png)
+    orange = sum(1 for y in range(0, image.height(), 2) for x in range(0, image.width(), 2)
+                 if QtGui.QColor(image.pixel(x, y)).redF() - QtGui.QColor(image.pixel(x, y)).greenF() > 0.3)
+    assert orange > 50, ("the highlighted patch does not show", orange)
+    form = panel.form.grab()
+    canvas = QtGui.QPixmap(form.width() + 700, max(560, form.height()))
+    canvas.fill(QtGui.QColor("white"))
+    painter = QtGui.QPainter(canvas)
+    painter.drawPixmap(0, 0, form)
+    painter.drawImage(form.width(), 0, QtGui.QImage(steps_png))
+    painter.end()
+    canvas.save(steps_png)
+    assert os.path.getsize(steps_png) > 1000, "empty steps screenshot"
     panel.reject()
     after = {p.Name: (p.ViewObject.Visibility, tuple(p.ViewObject.ShapeColor)) for p in patches.values()}
     assert after == before, "the steps changed the display for good"
