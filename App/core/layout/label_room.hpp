@@ -33,6 +33,10 @@ Region2d freeFor(const Region2d& inner, const std::vector<Label>& taken, Vec2 ha
 // The point of `region` nearest to `p` (p itself when inside).
 Vec2 nearestPoint(const Region2d& region, Vec2 p);
 
+// The boxes of the leaders' segments of `labels`, for freeFor's keepOff: a label set later
+// keeps off them (a segment's box will do).
+std::vector<Box2> leaderBoxes(const std::vector<Label>& labels);
+
 // The label of a slot that no label beside it or on its line reads as its own (a slot at
 // a narrow tip, a line along the outline): in room within reach of the slot's root, joined
 // to it by an engraved straight leader over `leaderRoom` (leaderPaper), crossing no label

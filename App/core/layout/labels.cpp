@@ -300,13 +300,7 @@ Label placeStep(const LabelPaper& paper, const std::string& text, const Label& n
                 const std::vector<Label>& taken) {
   std::vector<Label> all = taken;
   all.push_back(name);
-  std::vector<Box2> leaders;  // boxes keep off the leaders (a segment's box will do)
-  for (const Label& l : taken)
-    for (size_t i = 1; i < l.leader.size(); ++i)
-      leaders.push_back(
-          {{std::min(l.leader[i - 1].x, l.leader[i].x), std::min(l.leader[i - 1].y, l.leader[i].y)},
-           {std::max(l.leader[i - 1].x, l.leader[i].x), std::max(l.leader[i - 1].y, l.leader[i].y)},
-           false});
+  const std::vector<Box2> leaders = leaderBoxes(taken);
   const Box2 patch = paper.inner.bounds();
   const double top = std::max(kMinLabelHeight, name.height > 0 ? std::min(name.height / 2, 3.5) : 3.5);
   for (double height = top;; height = std::max(kMinLabelHeight, height * 0.8)) {

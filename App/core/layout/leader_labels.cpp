@@ -242,6 +242,17 @@ Stroke shortestLeader(const Field& f, const Routes& p, const std::vector<Vec2>& 
 
 }  // namespace
 
+std::vector<Box2> leaderBoxes(const std::vector<Label>& labels) {
+  std::vector<Box2> boxes;
+  for (const Label& l : labels)
+    for (size_t i = 1; i < l.leader.size(); ++i) {
+      const Vec2 a = l.leader[i - 1], b = l.leader[i];
+      boxes.push_back(
+          {{std::min(a.x, b.x), std::min(a.y, b.y)}, {std::max(a.x, b.x), std::max(a.y, b.y)}, false});
+    }
+  return boxes;
+}
+
 std::vector<Stroke> leaderStrokes(const Stroke& leader) {
   if (leader.size() < 2) return {};
   // An arrowhead at the slot, 0.5 mm long, its barbs 20 degrees off the leader: it stays
@@ -256,14 +267,7 @@ std::vector<Stroke> leaderStrokes(const Stroke& leader) {
 
 std::optional<Label> leaderLabel(const Region2d& inner, const Region2d& leaderRoom, const LabelSpot& s,
                                  const std::vector<Label>& taken, const std::vector<double>& heights) {
-  // Boxes keep off the leaders already drawn (a segment's box will do).
-  std::vector<Box2> keepOff;
-  for (const Label& l : taken)
-    for (size_t i = 1; i < l.leader.size(); ++i)
-      keepOff.push_back(
-          {{std::min(l.leader[i - 1].x, l.leader[i].x), std::min(l.leader[i - 1].y, l.leader[i].y)},
-           {std::max(l.leader[i - 1].x, l.leader[i].x), std::max(l.leader[i - 1].y, l.leader[i].y)},
-           false});
+  const std::vector<Box2> keepOff = leaderBoxes(taken);
   for (const double gap : kLeaderGaps)
     for (const Vec2& t : targets(leaderRoom, s)) {
       const Field field(leaderRoom, taken, t, gap);
