@@ -144,8 +144,8 @@ void printLayout(const SheetLayout& l) {
   int steps = 0;
   for (const FlatPatch& p : l.patches) steps += p.step > 0 && p.stepLabel.height <= 0;
   std::printf("; partner_labels_missing %d", missing);
-  if (steps > 0) std::printf("; %d patch(es) with no room for their step number", steps);
   if (missing > 0) std::printf(" (no room to read as the slot's on %s)", without.c_str());
+  if (steps > 0) std::printf("; %d patch(es) with no room for their step number", steps);
   std::printf("\n");
 }
 

@@ -193,6 +193,10 @@ Vec2 deepestPoint(const Region2d& region) {
 
 }  // namespace
 
+bool regionContains(const Region2d& region, Vec2 p) {
+  return contains(region, p);
+}
+
 Vec2 nearestPoint(const Region2d& region, Vec2 p) {
   if (contains(region, p)) return p;
   Vec2 best = p;

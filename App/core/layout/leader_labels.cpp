@@ -39,11 +39,6 @@ bool segmentsCross(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {
   return cross(a, b, c) * cross(a, b, d) < 0 && cross(c, d, a) * cross(c, d, b) < 0;
 }
 
-bool inside(const Region2d& region, Vec2 p) {
-  const Vec2 n = nearestPoint(region, p);  // p itself when inside
-  return n.x == p.x && n.y == p.y;
-}
-
 // Whether the segment a-b meets the box [lo, hi] (Liang-Barsky clipping).
 bool meetsBox(Vec2 a, Vec2 b, Vec2 lo, Vec2 hi) {
   double t0 = 0, t1 = 1;
@@ -96,13 +91,13 @@ std::vector<Vec2> targets(const Region2d& room, const LabelSpot& s) {
             {s.x - s.slotWidth / 2 - d, mid}};
   std::vector<Vec2> in;
   for (const Vec2& t : ends)
-    if (inside(room, t)) in.push_back(t);
+    if (regionContains(room, t)) in.push_back(t);
   return in;
 }
 
 // The paper a leader crosses near one slot: the leader paper's edges within reach, the
 // points where a shortest path may bend (its reflex corners, a little inside), and what a
-// leader must not cross (the labels' boxes, with half the gap, and the leaders drawn).
+// leader must not cross (the labels' boxes grown by the gap, and the leaders drawn).
 struct Field {
   const Region2d& room;
   std::vector<Segment> edges, leaders;
@@ -134,7 +129,7 @@ struct Field {
       for (const Vec2 c :
            {Vec2{l.at.x - h.x - b, l.at.y - h.y - b}, Vec2{l.at.x + h.x + b, l.at.y - h.y - b},
             Vec2{l.at.x + h.x + b, l.at.y + h.y + b}, Vec2{l.at.x - h.x - b, l.at.y + h.y + b}})
-        if (near(c) && inside(room, c)) bends.push_back(c);
+        if (near(c) && regionContains(room, c)) bends.push_back(c);
       for (size_t i = 1; i < l.leader.size(); ++i) leaders.push_back({l.leader[i - 1], l.leader[i]});
     }
   }
@@ -148,7 +143,7 @@ struct Field {
       if (segmentsCross(a, b, l.a, l.b)) return false;
     for (const Segment& e : edges)
       if (segmentsCross(a, b, e.a, e.b)) return false;
-    return inside(room, {(a.x + b.x) / 2, (a.y + b.y) / 2});
+    return regionContains(room, {(a.x + b.x) / 2, (a.y + b.y) / 2});
   }
 };
 
@@ -196,7 +191,7 @@ std::vector<Vec2> centres(const Region2d& room, Vec2 t) {
   const Box2 b = room.bounds();
   for (double x = b.min.x + kStep / 2; x < b.max.x; x += kStep)
     for (double y = b.min.y + kStep / 2; y < b.max.y; y += kStep)
-      if (inside(room, {x, y})) out.push_back({x, y});
+      if (regionContains(room, {x, y})) out.push_back({x, y});
   return out;
 }
 
