@@ -132,9 +132,12 @@ void printLayout(const SheetLayout& l) {
   int missing = 0, partners = 0, leaders = 0;
   std::string without;  // the patches with a slot left unlabelled
   for (const FlatPatch& p : l.patches) {
-    missing += p.partnersMissing, partners += static_cast<int>(p.partners.size()),
+    missing += static_cast<int>(p.unlabelled.size()), partners += static_cast<int>(p.partners.size()),
         leaders += p.partnersOnLeaders;
-    if (p.partnersMissing > 0) without += (without.empty() ? "" : " ") + p.id;
+    if (p.unlabelled.empty()) continue;
+    std::string slots;  // "V5 (slot for U11)"
+    for (const std::string& partner : p.unlabelled) slots += (slots.empty() ? "" : ", ") + partner;
+    without += (without.empty() ? "" : "; ") + p.id + " (slot for " + slots + ")";
   }
   std::printf("sheets     %d %s (%.0f x %.0f mm), %.0f %% used; shelf layout would take %d (%.0f %%)\n",
               l.packing.sheets, l.sheet.name.c_str(), l.sheet.width, l.sheet.height,

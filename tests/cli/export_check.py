@@ -220,6 +220,8 @@ def main():
                 fail(f"report {key} {report.get(key)}, patches sum to {total}")
             if any(p[key] > p["partner_labels"] + p["partner_labels_missing"] for p in report["patches"]):
                 fail(f"a patch has more {key} than slots")
+        if any(len(p["partner_labels_missing_for"]) != p["partner_labels_missing"] for p in report["patches"]):
+            fail("a patch's partner_labels_missing_for does not name each slot left without a label")
 
         # PDF: pages, page size, and every page renders.
         info = subprocess.run(["pdfinfo", os.path.join(out, "sheets.pdf")], capture_output=True, text=True).stdout

@@ -178,5 +178,71 @@ TEST(PartnerLabels, LeaderFromASlotAtANarrowTip) {
   EXPECT_TRUE(arrow[1].x == l.leader[0].x && arrow[1].y == l.leader[0].y);
 }
 
+TEST(PartnerLabels, BesideTheSlotInAFingerBeyondALeadersReach) {
+  // A body 20 x 20 mm and a finger 2 mm wide reaching 38 mm out of it, a slot cut down from
+  // its top edge 3 mm from its end: a 1 mm label with its 0.6 mm margins is 2.2 mm wide, and
+  // the body is more than a leader's 25 mm away. Only the leaders' 0.3 mm margin fits it.
+  const double y0 = 9, y1 = 11, x = 55, width = 0.5;
+  const Region2d paper = Region2d::fromLoops({{{0, 0},
+                                               {20, 0},
+                                               {20, y0},
+                                               {58, y0},
+                                               {58, y1},
+                                               {x + width / 2, y1},
+                                               {x + width / 2, 10},
+                                               {x - width / 2, 10},
+                                               {x - width / 2, y1},
+                                               {20, y1},
+                                               {20, 20},
+                                               {0, 20}}});
+  const std::vector<LabelSpot> spots{{"V7", x, {y0, y1}, 10.5, width, {10, y1}}};
+  const PatchLabels labels = labelPatch(labelPaper(paper), "U3", spots);
+  EXPECT_EQ(labels.missing, 0);
+  ASSERT_EQ(labels.partners.size(), 1u);
+  const Label& l = labels.partners[0];
+  EXPECT_EQ(l.text, "V7");
+  EXPECT_NEAR(l.height, kMinLabelHeight, 1e-9);
+  EXPECT_TRUE(l.leader.empty());
+  // Beside the slot, in the finger, 0.3 mm clear of every cut.
+  EXPECT_LT(std::abs(l.at.x - x), 3) << l.at.x;
+  EXPECT_TRUE(boxOf(l).subtract(paper.offset(-0.29)).empty()) << l.at.x << ", " << l.at.y;
+}
+
+TEST(PartnerLabels, ASmallerPatchIdWhereItTookTheSlotsRoom) {
+  // A lens 18.4 x 4.8 mm, a slot cut down from its top edge near its left tip and three up
+  // from its bottom edge, each to 0.15 mm short of the middle: its id, set large at the
+  // deepest spot, leaves two slots without room for their partner's id, beside them or on
+  // a leader. A size smaller it does not.
+  const double a = 9.18, b = 2.39, root = 0.15, width = 0.5;
+  Region2d::Loop lens;
+  for (int i = 0; i < 96; ++i) lens.push_back({a + a * std::cos(i * M_PI / 48), b * std::sin(i * M_PI / 48)});
+  Region2d paper = Region2d::fromLoops({lens});
+  std::vector<LabelSpot> spots;
+  for (const auto& [x, down] :
+       std::vector<std::pair<double, bool>>{{0.5, true}, {4.3, false}, {14, false}, {16, false}}) {
+    const double h = b * std::sqrt(1 - (x - a) * (x - a) / (a * a));
+    const Interval slot = down ? Interval{root, h} : Interval{-h, -root};
+    paper = paper.subtract(Region2d::fromLoops({{{x - width / 2, down ? root : -b - 1},
+                                                 {x + width / 2, down ? root : -b - 1},
+                                                 {x + width / 2, down ? b + 1 : -root},
+                                                 {x - width / 2, down ? b + 1 : -root}}}));
+    spots.push_back({"V" + std::to_string(spots.size()), x, {-h, h}, (slot.lo + slot.hi) / 2, width, slot});
+  }
+  const PatchLabels labels = labelPatch(labelPaper(paper), "U20", spots);
+  EXPECT_EQ(labels.missing, 0);
+  EXPECT_EQ(labels.partners.size(), spots.size());
+  EXPECT_GE(labels.name.height, kMinLabelHeight);
+  EXPECT_LT(labels.name.height, placeName(labelPaper(paper), "U20").height);
+  // Every label on the paper, with the leaders' margin at least, clear of the id and of each other.
+  const Region2d clear = paper.offset(-0.29);
+  for (size_t i = 0; i < labels.partners.size(); ++i) {
+    const Label& l = labels.partners[i];
+    EXPECT_TRUE(boxOf(l).subtract(clear).empty()) << l.text;
+    EXPECT_TRUE(boxOf(l).intersect(boxOf(labels.name)).empty()) << l.text;
+    for (size_t j = 0; j < i; ++j)
+      EXPECT_TRUE(boxOf(l).intersect(boxOf(labels.partners[j])).empty()) << l.text;
+  }
+}
+
 }  // namespace
 }  // namespace sliceform

@@ -240,7 +240,7 @@ TEST(Layout, LabelsSitOnPaperAndClearOfEachOther) {
         EXPECT_LT(box(all[i]).intersect(box(all[j])).area(), 1e-9)
             << p.id << ": " << all[i].text << " on " << all[j].text;
     }
-    partners += static_cast<int>(p.partners.size()) + p.partnersMissing;
+    partners += static_cast<int>(p.partners.size() + p.unlabelled.size());
   }
   // One partner label per hinge end that is still a hinge: every hinge labels both patches.
   int meeting = 0;

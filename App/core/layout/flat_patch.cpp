@@ -11,6 +11,7 @@
 #include <algorithm>
 
 #include <cmath>
+#include <set>
 
 #include "layout/labels.hpp"
 #include "pipeline/design.hpp"
@@ -169,11 +170,21 @@ FlatPatch flattenPatch(const Design& d, int k) {
   const std::vector<int>& order = d.realization.assemblyOrder;
   const auto at = std::find(order.begin(), order.end(), k);
   flat.step = at == order.end() ? 0 : static_cast<int>(at - order.begin()) + 1;
-  PatchLabels labels = labelPatch(paper, flat.id, partnerSpots(d, k), flat.step);
+  const std::vector<LabelSpot> spots = partnerSpots(d, k);
+  PatchLabels labels = labelPatch(paper, flat.id, spots, flat.step);
   flat.name = std::move(labels.name);
   flat.stepLabel = std::move(labels.step);
   flat.partners = std::move(labels.partners);
-  flat.partnersMissing = labels.missing;
+  // The slots left without, by their partner's id, so the user knows where to write one.
+  std::multiset<std::string> labelled;
+  for (const Label& l : flat.partners) labelled.insert(l.text);
+  for (const LabelSpot& s : spots) {
+    const auto found = labelled.find(s.text);
+    if (found == labelled.end())
+      flat.unlabelled.push_back(s.text);
+    else
+      labelled.erase(found);
+  }
   for (const Label& l : flat.partners) flat.partnersOnLeaders += !l.leader.empty();
   return flat;
 }

@@ -323,10 +323,17 @@ Label placeStep(const LabelPaper& paper, const std::string& text, const Label& n
   return Label{text, {}, 0, false, {}, {}};
 }
 
-Label placeName(const LabelPaper& paper, const std::string& id, const std::vector<Label>& taken) {
+const std::vector<double>& nameHeights() {
+  static const std::vector<double> heights{8.0, 6.0, 5.0, 4.0, 3.0, 2.5, 2.0, 1.6, 1.3, kMinLabelHeight};
+  return heights;
+}
+
+Label placeName(const LabelPaper& paper, const std::string& id, const std::vector<Label>& taken,
+                double maxHeight) {
   // Every box size searches the same inner paper, eroded once.
   const Region2d& inner = paper.inner;
-  for (const double height : {8.0, 6.0, 5.0, 4.0, 3.0, 2.5, 2.0, 1.6, 1.3, 1.0}) {
+  for (const double height : nameHeights()) {
+    if (height > maxHeight) continue;
     // No box fits where a disc as wide as the box's short side does not: a cheap test first.
     // Its round corners may be coarse: a rounded erosion's corners lie on the true arcs and
     // cut inside them, so it only keeps more than the exact erosion, never less, and calls

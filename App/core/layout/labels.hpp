@@ -43,9 +43,12 @@ struct LabelPaper {
 };
 LabelPaper labelPaper(const Region2d& paper);
 
-// The patch id at the deepest spot that holds it (up to 8 mm high), horizontal if it fits
+// The patch id at the deepest spot that holds it (up to 8 mm high, and `maxHeight`), horizontal if it fits
 // there, else upright, clear of `taken` labels; empty strokes when no box of 1 mm fits.
-Label placeName(const LabelPaper& paper, const std::string& id, const std::vector<Label>& taken = {});
+// The sizes a patch id is tried at, largest first, mm.
+const std::vector<double>& nameHeights();
+Label placeName(const LabelPaper& paper, const std::string& id, const std::vector<Label>& taken = {},
+                double maxHeight = 8.0);
 Label placeName(const Region2d& paper, const std::string& id);
 // Partner labels at each slot, in spot order: beside it, across or turned along it, or on
 // its hinge line beyond it; up to `maxHeight` (3.5 mm at most) and down to kMinLabelHeight;

@@ -134,7 +134,8 @@ json reportJson(const Model& model, const DesignParams& params, const Design& d)
          {"step", flat.step},
          {"step_label", label(flat.stepLabel)},
          {"partner_labels", flat.partners.size()},
-         {"partner_labels_missing", flat.partnersMissing},
+         {"partner_labels_missing", flat.unlabelled.size()},
+         {"partner_labels_missing_for", flat.unlabelled},
          {"partner_labels_on_leaders", flat.partnersOnLeaders}});
   }
   doc["patches"] = patches;
@@ -198,7 +199,7 @@ json reportJson(const Model& model, const DesignParams& params, const Design& d)
   // Slots without their partner's id: what whoever assembles has to work out from the 3D.
   int partners = 0, missing = 0, leaders = 0;
   for (const FlatPatch& p : l.patches)
-    partners += static_cast<int>(p.partners.size()), missing += p.partnersMissing,
+    partners += static_cast<int>(p.partners.size()), missing += static_cast<int>(p.unlabelled.size()),
         leaders += p.partnersOnLeaders;
   doc["partner_labels"] = partners;
   doc["partner_labels_missing"] = missing;
