@@ -214,11 +214,12 @@ void runDesign(DesignOptions o) {
   std::optional<Design> given;
   std::string refusal;  // why the file's axes give no buildable design
   const auto begun = std::chrono::steady_clock::now();
+  const Deadline deadline(o.params.timeLimit);  // the whole run's, other frames included
   if (o.directions == "auto") {
-    given = designInBestFrame(model, o.params, choice, std::ref(bar), ready);
+    given = designInBestFrame(model, o.params, choice, std::ref(bar), ready, &deadline);
   } else {
     try {
-      given = runDesign(model, o.params, std::ref(bar), ready);
+      given = runDesign(model, o.params, std::ref(bar), ready, &deadline);
       const std::vector<std::string> problems = designProblems(*given);
       if (!problems.empty()) refusal = problems.front();
     } catch (const Error& e) {
@@ -231,7 +232,13 @@ void runDesign(DesignOptions o) {
   // axes, buildable turned). The design in the best frame is kept only if it can be built.
   const double firstMs =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - begun).count();
-  if (!refusal.empty() && mayTurn) {
+  if (!refusal.empty() && mayTurn && deadline.passed()) {
+    bar.clear();
+    std::printf("directions the file's axes give no buildable design (%s); the time limit (%g s) left "
+                "no time to try others\n",
+                refusal.c_str(), o.params.timeLimit);
+    if (!given) throw Error(ErrorKind::Unbuildable, refusal);
+  } else if (!refusal.empty() && mayTurn) {
     bar.clear();
     std::printf(
         "directions the file's axes give no buildable design (%s); trying others (--directions auto)\n",
@@ -241,7 +248,7 @@ void runDesign(DesignOptions o) {
     DirectionChoice other;
     std::optional<Design> turned;
     try {
-      turned = designInBestFrame(model, o.params, other, std::ref(bar), ready);
+      turned = designInBestFrame(model, o.params, other, std::ref(bar), ready, &deadline);
     } catch (const Error& e) {
       if (e.kind() != ErrorKind::Unbuildable && e.kind() != ErrorKind::BadInput) throw;
     }

@@ -3,7 +3,8 @@
 no buildable design (OCCT's TR12J_OCC.stl: a patch in pieces): the run says so, designs in
 the best other frame (--directions auto), exits 0 with a design the independent checker
 passes and report.json naming the frame; with `--directions given` asked for, the same
-model is refused (exit 1) and no other frame is tried.
+model is refused (exit 1) and no other frame is tried. The time limit covers the whole run:
+when the file's axes used it up, no other frame is tried either, and the run says why.
 
 Usage: directions_fallback_check.py SLICEFORM MODEL CHECK_REPORT
 """
@@ -26,6 +27,12 @@ def main():
         assert run.returncode == 1, "exit %d: the file's axes were expected not to build" % run.returncode
         assert "trying others" not in run.stdout, "--directions given was asked for: no other frame"
         assert "cannot be built" in run.stderr
+    with tempfile.TemporaryDirectory() as out:
+        run = design(sliceform, model, out, "--time-limit", "0.05")
+        assert run.returncode == 1, "exit %d: the time limit ran out" % run.returncode
+        assert "trying others" not in run.stdout, "other frames tried after the time limit ran out"
+        assert "the time limit (0.05 s) left no time to try others" in run.stdout
+        assert "the time limit (0.05 s) ran out" in run.stderr
     with tempfile.TemporaryDirectory() as out:
         run = design(sliceform, model, out)
         assert run.returncode == 0, "exit %d" % run.returncode

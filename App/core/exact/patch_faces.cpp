@@ -228,7 +228,8 @@ TopoDS_Shape facesFromRegion(const Region2d& region, const SliceFrame& frame, do
   return out.size() == 1 ? out.front() : compound(out);
 }
 
-std::vector<PatchFace> exactPatches(const Model& model, const Arrangement& a, const Realization& r) {
+std::vector<PatchFace> exactPatches(const Model& model, const Arrangement& a, const Realization& r,
+                                    const Deadline& deadline) {
   const Scaffold& scaffold = a.scaffold;
   std::vector<PatchFace> out(scaffold.patches.size());
   const bool exact = model.kind == SourceKind::Brep && !model.shape.IsNull();
@@ -260,6 +261,7 @@ std::vector<PatchFace> exactPatches(const Model& model, const Arrangement& a, co
       // Where OCCT fails, the patches are emitted as the polygons the search checked (below:
       // a cylinder without its exact section, a patch whose slots cannot be cut).
       std::vector<ExactSlice> cut;
+      if (deadline.passed()) continue;
       try {
         cut = sliceBrep(model.shape, set.frame, positions, exactDeflection(model.meshDeflection),
                         SliceDetail::FacesOnly);
@@ -273,6 +275,7 @@ std::vector<PatchFace> exactPatches(const Model& model, const Arrangement& a, co
     parallelFor(keys.size(), [&](size_t i) {
       const bool isU = keys[i].first == 0;
       const Cylinder& c = (isU ? a.uCylinders : a.vCylinders)[keys[i].second];
+      if (deadline.passed()) return;
       try {
         built[i] = occtGuard("building an exact patch", [&] {
           return exactSection(c, chosen[i], isU ? uSlices : vSlices, isU ? a.u.frame : a.v.frame,
@@ -296,7 +299,7 @@ std::vector<PatchFace> exactPatches(const Model& model, const Arrangement& a, co
       return;
     }
     const auto section0 = sections.find({p.family == Family::U ? 0 : 1, p.cylinder});
-    if (section0 == sections.end()) {
+    if (section0 == sections.end() || deadline.passed()) {
       pf = polygonPatch(a, r, static_cast<int>(k), false);
       return;
     }

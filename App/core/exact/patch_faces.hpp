@@ -17,6 +17,7 @@
 #include "arrangement/arrange.hpp"
 #include "model/model.hpp"
 #include "realization/realize.hpp"
+#include "support/deadline.hpp"
 
 namespace sliceform {
 
@@ -27,8 +28,9 @@ struct PatchFace {
   bool exact = false;  // built from exact sections (BRep source)
 };
 
+// Once `deadline` has passed, the patches not yet cut are the search's polygons.
 std::vector<PatchFace> exactPatches(const Model& model, const Arrangement& arrangement,
-                                    const Realization& realization);
+                                    const Realization& realization, const Deadline& deadline = {});
 
 // Patch k as the slotted polygon the search made, simplified within kOutlineDeflection or
 // not at all: what a mesh source emits, and (unsimplified) what replaces an exact face or a

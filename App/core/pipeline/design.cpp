@@ -23,12 +23,13 @@ auto timed(std::vector<StageTime>& timings, const char* stage, const Progress& p
 }  // namespace
 
 Design runDesign(const Model& model, DesignParams params, const Progress& progress,
-                 const PatchesReady& patchesReady) {
+                 const PatchesReady& patchesReady, const Deadline* runDeadline) {
   // Hinges must hold with the slot cut: the paper beside it is measured from its walls.
   checkSlotParams(params.slots);
   if (!(params.timeLimit >= 0))
     throw Error(ErrorKind::BadParameter, "the time limit must be 0 (none) or more seconds");
-  const Deadline deadline(params.timeLimit);
+  const Deadline own(runDeadline ? 0 : params.timeLimit);
+  const Deadline& deadline = runDeadline ? *runDeadline : own;
   params.arrangement.hinges.slotWidth = params.slots.width();
   Design d;
   d.timeLimit = params.timeLimit;
@@ -45,7 +46,7 @@ Design runDesign(const Model& model, DesignParams params, const Progress& progre
   });
   const RealizationInput input = realizationInput(d.arrangement, model.meshDeflection);
   d.patches = timed(d.timings, "exact patches", progress,
-                    [&] { return exactPatches(model, d.arrangement, d.realization); });
+                    [&] { return exactPatches(model, d.arrangement, d.realization, deadline); });
   const std::vector<ScaffoldHinge>& hinges = d.arrangement.scaffold.hinges;
   d.emitted = timed(d.timings, "check", progress, [&] {
     const auto outlines = [&] {

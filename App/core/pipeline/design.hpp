@@ -18,6 +18,7 @@
 #include "pipeline/frame_trials.hpp"
 #include "realization/grazes.hpp"
 #include "realization/realize.hpp"
+#include "support/deadline.hpp"
 #include "verify/emitted.hpp"
 
 namespace sliceform {
@@ -26,7 +27,7 @@ struct DesignParams {
   ArrangementParams arrangement;
   SlotParams slots;
   SheetSpec sheet;
-  // Seconds the searches may take in all, from the start of runDesign (0: no limit). A last
+  // Seconds the searches may take in all, from the start of the run (0: no limit). A last
   // resort: past it the design is the best found, and it is not called buildable.
   double timeLimit = 60;
 };
@@ -52,8 +53,10 @@ constexpr int kDesignStages = 6;
 // design is the pipeline's own, about to change: copy what is needed, keep no reference.
 using PatchesReady = std::function<void(const Design& design)>;
 
+// `deadline`: the run's, when it designs more than once (other frames); by default
+// params.timeLimit from now.
 Design runDesign(const Model& model, DesignParams params, const Progress& progress = {},
-                 const PatchesReady& patchesReady = {});
+                 const PatchesReady& patchesReady = {}, const Deadline* deadline = nullptr);
 
 // Why the design cannot be built, one clause per broken rule naming what helps; empty when
 // it can. The CLI's exit code and the FreeCAD feature's state both come from it.

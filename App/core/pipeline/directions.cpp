@@ -257,7 +257,10 @@ std::vector<FrameTrial> candidateFrames(const Model& model) {
 }
 
 Design designInBestFrame(const Model& model, DesignParams params, DirectionChoice& choice,
-                         const Progress& progress, const PatchesReady& patchesReady) {
+                         const Progress& progress, const PatchesReady& patchesReady,
+                         const Deadline* runDeadline) {
+  const Deadline own(runDeadline ? 0 : params.timeLimit);
+  const Deadline& deadline = runDeadline ? *runDeadline : own;
   const auto start = std::chrono::steady_clock::now();
   choice = DirectionChoice{};
   choice.automatic = true;
@@ -294,10 +297,11 @@ Design designInBestFrame(const Model& model, DesignParams params, DirectionChoic
     FrameTrial& t = trials[order[r]];
     if (t.score < 0) break;
     if (r == 1 && designs.size() == 1 && trials[designs[0].first].buildable) break;
+    if (r == 1 && deadline.passed()) break;  // the time is up: the best frame's design stands
     DesignParams p = params;
     p.arrangement.u = t.u, p.arrangement.v = t.v;
     try {
-      Design d = runDesign(model, p, progress);
+      Design d = runDesign(model, p, progress, {}, &deadline);
       t.designed = true;
       t.buildable = designProblems(d).empty();
       t.quality = d.arrangement.quality;

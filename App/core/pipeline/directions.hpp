@@ -24,6 +24,7 @@ bool standsUp(const Mesh& mesh, const Vec3& up);
 // The design in the best frame; `choice` gets every frame tried. `params.arrangement.u/v`
 // are ignored. Throws the best frame's error when no frame gives a design.
 Design designInBestFrame(const Model& model, DesignParams params, DirectionChoice& choice,
-                         const Progress& progress = {}, const PatchesReady& patchesReady = {});
+                         const Progress& progress = {}, const PatchesReady& patchesReady = {},
+                         const Deadline* deadline = nullptr);
 
 }  // namespace sliceform
