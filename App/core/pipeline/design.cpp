@@ -120,7 +120,7 @@ std::vector<std::string> designProblems(const Design& d) {
     s << e.splitPatches << " patch(es) in pieces (" << where(e.split)
       << "): their slots leave paper narrower than " << 2 * slotNeck(d.realization.params, 0)
       << " mm between them or to the edge (try a larger --min-spacing for "
-      << "fewer patches farther apart, or a thinner --thickness)";
+      << "fewer patches farther apart, a larger --size for wider paper, or a thinner --thickness)";
     out.push_back(s.str());
   }
   if (!e.collisions.empty()) {
