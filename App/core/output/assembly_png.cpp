@@ -204,17 +204,15 @@ void fillPanel(Raster& r, const Placement& pl, const Panel3& panel, Fill mode = 
   }
 }
 
-// The outlines as dark lines, hidden where other paper is in front: a line passes the depth
-// test with a small bias, so it shows on its own panel.
-void drawEdges(Raster& r, const Placement& pl, const Panel3& panel, int thickness, double bias) {
+// Every pixel of a panel's outlines, drawn `thickness` wide, with the line's depth there.
+template <class Fn>
+void forEdgePixels(int width, int height, const Placement& pl, const Panel3& panel, int thickness, Fn&& fn) {
   auto stamp = [&](double x, double y, double z) {
     const int cx = static_cast<int>(std::floor(x - thickness / 2.0 + 0.5));
     const int cy = static_cast<int>(std::floor(y - thickness / 2.0 + 0.5));
-    for (int row = std::max(0, cy); row < std::min(r.height, cy + thickness); ++row)
-      for (int col = std::max(0, cx); col < std::min(r.width, cx + thickness); ++col) {
-        const size_t at = size_t(row) * r.width + col;
-        if (z + bias >= r.depth[at]) r.colour[at] = {kEdge, kEdge, kEdge};
-      }
+    for (int row = std::max(0, cy); row < std::min(height, cy + thickness); ++row)
+      for (int col = std::max(0, cx); col < std::min(width, cx + thickness); ++col)
+        fn(size_t(row) * width + col, z);
   };
   for (const auto& loop : panel.loops)
     for (size_t i = 0; i < loop.size(); ++i) {
@@ -225,6 +223,24 @@ void drawEdges(Raster& r, const Placement& pl, const Panel3& panel, int thicknes
         stamp(a.x + t * (b.x - a.x), a.y + t * (b.y - a.y), a.z + t * (b.z - a.z));
       }
     }
+}
+
+// The outlines as dark lines, hidden where other paper is in front: a line passes the depth
+// test with a small bias, so it shows on its own panel.
+void drawEdges(Raster& r, const Placement& pl, const Panel3& panel, int thickness, double bias) {
+  forEdgePixels(r.width, r.height, pl, panel, thickness, [&](size_t at, double z) {
+    if (z + bias >= r.depth[at]) r.colour[at] = {kEdge, kEdge, kEdge};
+  });
+}
+
+// The same lines kept aside, as the nearest line depth (plus the bias) at each pixel: a
+// pixel shows a line once that is at least the paper's depth there, whatever was filled
+// after. A growing assembly then draws each panel's lines once, not again at every step.
+void keepEdges(std::vector<double>& lines, const Raster& r, const Placement& pl, const Panel3& panel,
+               int thickness, double bias) {
+  forEdgePixels(r.width, r.height, pl, panel, thickness, [&](size_t at, double z) {
+    lines[at] = std::max(lines[at], z + bias);
+  });
 }
 
 // Averages each kSupersample x kSupersample block into one opaque pixel.
@@ -301,8 +317,8 @@ void checkWidth(int widthPixels) {
 struct GrowingAssembly::State {
   const std::vector<Panel3>& panels;
   Placement pl;
-  Raster built;  // every panel added so far, filled
-  std::vector<int> shown;
+  Raster built;              // every panel added so far, filled
+  std::vector<double> lines;  // and their outlines (keepEdges)
   int thickness;
   double bias;
 };
@@ -311,7 +327,9 @@ GrowingAssembly::GrowingAssembly(const std::vector<Panel3>& panels, int widthPix
   checkWidth(widthPixels);
   const Placement pl = place(panels, widthPixels);
   const int thickness = edgeThickness(widthPixels);
-  state_.reset(new State{panels, pl, Raster(pl.width, pl.height), {}, thickness, edgeBias(pl, thickness)});
+  state_.reset(new State{panels, pl, Raster(pl.width, pl.height),
+                         std::vector<double>(size_t(pl.width) * pl.height, -HUGE_VAL), thickness,
+                         edgeBias(pl, thickness)});
 }
 
 GrowingAssembly::~GrowingAssembly() = default;
@@ -319,10 +337,11 @@ GrowingAssembly::~GrowingAssembly() = default;
 Picture GrowingAssembly::add(int panel) {
   State& s = *state_;
   fillPanel(s.built, s.pl, s.panels[panel]);
-  s.shown.push_back(panel);
+  keepEdges(s.lines, s.built, s.pl, s.panels[panel], s.thickness, s.bias);
   Raster r = s.built;
   fillPanel(r, s.pl, s.panels[panel], Fill::Highlight);
-  for (const int k : s.shown) drawEdges(r, s.pl, s.panels[k], s.thickness, s.bias);
+  for (size_t at = 0; at < s.lines.size(); ++at)
+    if (s.lines[at] > -HUGE_VAL && s.lines[at] >= r.depth[at]) r.colour[at] = {kEdge, kEdge, kEdge};
   fillPanel(r, s.pl, s.panels[panel], Fill::XRay);
   return downsample(r);
 }
