@@ -250,8 +250,9 @@ class FoldCommand:
             # Down and up again: 90 at t = 0 and 1, FLAT at t = 0.5.
             angle = 90 - (90 - self.FLAT) * (1 - abs(2 * t - 1))
             self.shown.append(angle)
-            obj.FoldAngle = angle
-            obj.recompute()  # only re-poses the patches: the design is kept in memory
+            obj.FoldAngle = angle  # re-poses the patches at once: the design is in memory
+            if "Touched" in obj.State:
+                obj.recompute()  # after a reopen: designed again, once
             FreeCADGui.updateGui()
 
         self.timer = QtCore.QTimer()
@@ -265,7 +266,8 @@ class FoldCommand:
         obj, self.timer = getattr(self, "obj", None), None
         if obj is not None and obj.isValid():
             obj.FoldAngle = self.start
-            obj.recompute()
+            if "Touched" in obj.State:
+                obj.recompute()
             FreeCADGui.updateGui()
 
 

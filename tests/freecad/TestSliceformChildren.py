@@ -114,6 +114,52 @@ class TestSliceformChildren(unittest.TestCase):
                     with open(os.path.join(folder, name)) as f:
                         self.assertNotIn("purgeTouched", f.read(), name)
 
+    def test_fold_angle_edit_turns_the_patches_and_recomputes_nothing(self):
+        """A FoldAngle edit with the design in memory re-poses the sliceform at once and
+        touches nothing: no child, and no TechDraw view, is recomputed (they redid their
+        hidden lines on every fold edit: 0.5 s on fandisk). It is one Undo step, and Undo
+        brings the pose back, again with nothing to recompute (issue 17)."""
+        box, cut = self.box_with_hole(60)
+        sliceform = self.create(cut)
+        popped = sliceform.Shape.BoundBox
+
+        class Recomputed:
+            def __init__(self):
+                self.names = []
+
+            def slotRecomputedObject(self, obj):
+                self.names.append(obj.Name)
+
+        seen = Recomputed()
+        FreeCAD.addDocumentObserver(seen)
+        try:
+            self.doc.openTransaction("Edit FoldAngle")
+            sliceform.FoldAngle = 30
+            self.doc.recompute()
+            self.doc.commitTransaction()
+            folded = sliceform.Shape.BoundBox
+            self.assertEqual(seen.names, [])
+            # Turned: the lattice's box is another (the patches stand at 30 degrees).
+            self.assertGreater(abs(folded.XLength - popped.XLength) + abs(folded.YLength - popped.YLength), 1)
+            self.assertEqual([o.Name for o in self.doc.Objects if "Touched" in o.State], [])
+            self.assertEqual(self.doc.UndoNames[0], "Edit FoldAngle")
+            self.doc.undo()
+            self.doc.recompute()
+            self.assertEqual(seen.names, [])
+            self.assertEqual(sliceform.FoldAngle.Value, 90)
+            self.assertTrue(sliceform.Shape.BoundBox.isInside(popped.Center))
+            self.assertAlmostEqual(sliceform.Shape.BoundBox.XLength, popped.XLength, 6)
+            self.assertAlmostEqual(sliceform.Shape.BoundBox.YLength, popped.YLength, 6)
+        finally:
+            FreeCAD.removeDocumentObserver(seen)
+        # After a reopen the design is not in memory: the edit then recomputes the feature.
+        sliceform.Proxy._forget()
+        sliceform.FoldAngle = 45
+        self.assertIn("Touched", sliceform.State)
+        self.doc.recompute()
+        self.assertTrue(sliceform.isValid())
+        self.check_children(sliceform)
+
     def test_source_edit_that_lowers_the_count_adds_no_undo_step(self):
         box, cut = self.box_with_hole(60)
         sliceform = self.create(cut)
