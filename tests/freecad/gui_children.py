@@ -8,6 +8,7 @@
 # save and reopen no TechDraw page opens by itself, nothing is marked for recompute, the
 # tree shows the children, and the Export command and Show report's "Save report.json..."
 # work at once. Writes "ok" or the failure to $SLICEFORM_CHILDREN_RESULT.
+import gc
 import os
 import tempfile
 import traceback
@@ -78,7 +79,10 @@ def task_panel_widgets():
     from PySide import QtGui
 
     main = FreeCADGui.getMainWindow()
-    forms = [w for w in main.findChildren(QtGui.QWidget) if w.windowTitle() == "Sliceform" and
+    # allWidgets, not the main window's findChildren: that makes every widget a Python child
+    # of the main window, kept after its C++ object is gone, and shiboken then hands that
+    # stale wrapper out for a FreeCAD field made later at the same address.
+    forms = [w for w in QtGui.QApplication.allWidgets() if w.windowTitle() == "Sliceform" and
              isinstance(w.layout(), QtGui.QFormLayout)]
     assert forms, "no task panel"
     form = forms[-1]
@@ -93,6 +97,15 @@ def task_panel_widgets():
     boxes = [b for b in main.findChildren(QtGui.QDialogButtonBox) if b.isVisible() and
              b.button(QtGui.QDialogButtonBox.Cancel) is not None]
     return fields, recompute, boxes[-1].button(QtGui.QDialogButtonBox.Cancel)
+
+
+def type_into(widget, text):
+    """Keys pressed in a field, as a user types them (QtTest is not installed)."""
+    from PySide import QtCore, QtGui
+
+    for char in text:
+        for kind in (QtCore.QEvent.KeyPress, QtCore.QEvent.KeyRelease):
+            QtGui.QApplication.sendEvent(widget, QtGui.QKeyEvent(kind, 0, QtCore.Qt.NoModifier, char))
 
 
 try:
@@ -149,7 +162,23 @@ try:
     FreeCADGui.updateGui()
     fields, recompute, cancel = task_panel_widgets()
     # The rows come from the core's parameter schema, with their units.
-    assert fields["Thickness"].suffix() == " mm" and fields["Slices"].maximum() == 4096, fields
+    # Lengths and angles in FreeCAD's own quantity fields: typed in any unit, read in mm.
+    from sliceform_gui import task_panel
+
+    thickness = fields["Thickness"]
+    assert thickness.metaObject().className() == "Gui::QuantitySpinBox", thickness.metaObject().className()
+    assert fields["Fold angle"].metaObject().className() == "Gui::QuantitySpinBox"
+    assert fields["Slices"].maximum() == 4096, fields
+    assert abs(task_panel.field_value(thickness) - 0.3) < 1e-9, task_panel.field_value(thickness)
+    thickness.selectAll()
+    type_into(thickness, "0.03 cm")
+    FreeCADGui.updateGui()
+    assert abs(task_panel.field_value(thickness) - 0.3) < 1e-9, (thickness.text(), task_panel.field_value(thickness))
+    thickness.selectAll()
+    type_into(thickness, "0.02 in")
+    FreeCADGui.updateGui()
+    assert abs(task_panel.field_value(thickness) - 0.508) < 1e-9, (thickness.text(), task_panel.field_value(thickness))
+    thickness.setProperty("rawValue", 0.3)
     # Nothing clipped in the narrow Combo View: every field ends inside the task view.
     area = fields["Thickness"]
     while area is not None and not isinstance(area, QtGui.QScrollArea):
@@ -173,6 +202,10 @@ try:
     after = snapshot(doc, sliceform)
     for key in before:
         assert after[key] == before[key], "Cancel left {} changed: {} -> {}".format(key, before[key], after[key])
+    # The closed panel's fields are gone: a Python name still holding one would stand for
+    # a new field made at the same address (shiboken keeps its wrapper).
+    del fields, thickness, area, recompute, cancel, sheet
+    gc.collect()
 
     # 1b. The same change kept with OK: one Undo step, which takes it all back.
     FreeCADGui.Selection.clearSelection()
