@@ -30,7 +30,9 @@ class SliceformWorkbench(FreeCADGui.Workbench):
         self.appendMenu("&Sliceform", names)
         # The preferences page's icon is looked up by name: preferences-sliceform.svg.
         FreeCADGui.addIconPath(sliceform_gui.icon_path(""))
-        FreeCADGui.addPreferencePage(sliceform_gui.ui_path("preferences.ui"), "Sliceform")
+        from sliceform_gui import preferences
+
+        FreeCADGui.addPreferencePage(preferences.PreferencesPage, "Sliceform")
 
     def GetClassName(self):
         return "Gui::PythonWorkbench"

@@ -12,7 +12,3 @@ def icon_path(name):
 
 def translations_path():
     return os.path.join(RESOURCES, "translations")
-
-
-def ui_path(name):
-    return os.path.join(RESOURCES, "ui", name)

@@ -7,12 +7,13 @@ import FreeCAD
 import FreeCADGui
 from PySide import QtCore, QtGui
 
+from sliceform_gui import fields
+
 
 QT_TRANSLATE_NOOP = FreeCAD.Qt.QT_TRANSLATE_NOOP
 translate = FreeCAD.Qt.translate
 
 
-# (property, label, minimum, maximum, step, decimals) for the spin boxes
 # The numbers the panel shows, by property, in this order: label, range, step and unit come
 # from the core's parameter schema (the custom sheet's size is FreeCAD's own).
 NUMBERS = ("Slices", "Size", "Thickness", "Clearance", "Kerf", "MinHingeLength", "MinSlotEdgeDistance", "TauA",
@@ -20,64 +21,14 @@ NUMBERS = ("Slices", "Size", "Thickness", "Clearance", "Kerf", "MinHingeLength",
 _SHEET_ROW = {"min": 10.0, "max": 10000.0, "step": 10.0, "unit": "mm", "kind": "real"}
 _SHEET_LABELS = {"SheetWidth": QT_TRANSLATE_NOOP("Sliceform", "Custom sheet width"),
                  "SheetHeight": QT_TRANSLATE_NOOP("Sliceform", "Custom sheet height")}
-_SUFFIX = {"mm": " mm", "s": " s", "deg": "\u00b0"}
-# Units FreeCAD's quantity fields know: a length or an angle is typed in any unit of its
-# kind ("0.02 in", "1/64 in", "0.5 rad") and shown in the user's unit schema.
-_QUANTITY = {"mm": "mm", "deg": "deg"}
 
 
 def number_rows():
-    """(property, label, low, high, step, decimals, suffix, unit) per row, from the schema;
-    `unit` is the quantity's unit ("mm", "deg") or None for a plain number."""
+    """(property, schema row) per number the panel shows."""
     from sliceform_app import parameters
 
     by_property = {s["property"]: s for s in parameters.schema() if s["property"]}
-    rows = []
-    for name in NUMBERS:
-        s = by_property.get(name) or dict(_SHEET_ROW, label=_SHEET_LABELS[name])
-        text = repr(float(s["step"]))
-        decimals = 0 if s["kind"] == "integer" else max(1, len(text.split(".")[1].rstrip("0")))
-        rows.append((name, s["label"], s["min"], s["max"], s["step"], decimals, _SUFFIX.get(s["unit"], ""),
-                     _QUANTITY.get(s["unit"])))
-    return rows
-
-
-def quantity_field(parent, unit, low, high, step, value):
-    """FreeCAD's own quantity field (Gui::QuantitySpinBox), as its property editor uses;
-    owned by `parent` (a field the loader made without one is deleted with the loader)."""
-    box = FreeCADGui.UiLoader().createWidget("Gui::QuantitySpinBox", parent)
-    try:
-        box.setProperty("unit", unit)
-    except RuntimeError:
-        # shiboken handed out the wrapper of an earlier widget at the same address, which a
-        # Python name still holds (findChildren on the main window keeps them): no field.
-        return None
-    box.setProperty("minimum", low)
-    box.setProperty("maximum", high)
-    box.setProperty("singleStep", step)
-    box.setProperty("rawValue", value)
-    return box
-
-
-def number_field(low, high, step, decimals, suffix, value):
-    """A plain spin box: a count (decimals 0) or a number with its suffix."""
-    if decimals == 0:
-        box = QtGui.QSpinBox()
-        low, high, step, value = int(low), int(high), int(step), int(value)
-    else:
-        box = QtGui.QDoubleSpinBox()
-        box.setDecimals(decimals)
-    box.setRange(low, high)
-    box.setSingleStep(step)
-    box.setSuffix(suffix)
-    box.setValue(value)
-    return box
-
-
-def field_value(box):
-    """A field's number, in the property's own unit (mm, degrees) for a quantity field."""
-    raw = box.property("rawValue")
-    return float(raw) if raw is not None else box.value()
+    return [(name, by_property.get(name) or dict(_SHEET_ROW, label=_SHEET_LABELS[name])) for name in NUMBERS]
 
 
 CHOICES = (
@@ -105,14 +56,11 @@ class SliceformTaskPanel:
         layout.setRowWrapPolicy(QtGui.QFormLayout.WrapLongRows)
         layout.setFieldGrowthPolicy(QtGui.QFormLayout.AllNonFixedFieldsGrow)
         self.numbers = {}
-        for name, label, low, high, step, decimals, suffix, unit in number_rows():
-            value = _value(obj, name)
-            box = quantity_field(self.form, unit, low, high, step, value) if unit else None
-            if box is None:
-                box = number_field(low, high, step, decimals, suffix, value)
+        for name, spec in number_rows():
+            box = fields.field(self.form, spec, _value(obj, name))
             box.setToolTip(translate("App::Property", obj.getDocumentationOfProperty(name)))
             # Schema labels are in the translation template too (scripts/update-translations).
-            layout.addRow(translate("Sliceform", label), box)
+            layout.addRow(translate("Sliceform", spec["label"]), box)
             self.numbers[name] = box
         self.choices = {}
         for name, label in CHOICES:
@@ -133,7 +81,7 @@ class SliceformTaskPanel:
 
     def apply(self):
         for name, box in self.numbers.items():
-            value = field_value(box)
+            value = fields.value(box)
             if abs(_value(self.obj, name) - value) > 1e-12:
                 setattr(self.obj, name, value)
         for name, combo in self.choices.items():

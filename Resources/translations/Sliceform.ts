@@ -45,7 +45,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../App/sliceform_app/feature.py" line="56"/>
+        <location filename="../../App/sliceform_app/feature.py" line="62"/>
         <source>Patches and pages made for the design</source>
         <translation type="unfinished"></translation>
     </message>
@@ -248,17 +248,17 @@
 <context>
     <name>Sliceform</name>
     <message>
-        <location filename="../../Gui/sliceform_gui/assembly_steps.py" line="33"/>
+        <location filename="../../Gui/sliceform_gui/assembly_steps.py" line="39"/>
         <source>Assembly steps</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../Gui/sliceform_gui/assembly_steps.py" line="39"/>
+        <location filename="../../Gui/sliceform_gui/assembly_steps.py" line="45"/>
         <source>Previous</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../Gui/sliceform_gui/assembly_steps.py" line="40"/>
+        <location filename="../../Gui/sliceform_gui/assembly_steps.py" line="46"/>
         <source>Next</source>
         <translation type="unfinished"></translation>
     </message>
@@ -278,42 +278,42 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../Gui/sliceform_gui/task_panel.py" line="122"/>
+        <location filename="../../Gui/sliceform_gui/task_panel.py" line="108"/>
         <source>Error: </source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../Gui/sliceform_gui/commands.py" line="292"/>
+        <location filename="../../Gui/sliceform_gui/commands.py" line="294"/>
         <source>{} report</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../Gui/sliceform_gui/commands.py" line="293"/>
+        <location filename="../../Gui/sliceform_gui/commands.py" line="295"/>
         <source>Not computed yet: recompute the sliceform.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../Gui/sliceform_gui/commands.py" line="294"/>
+        <location filename="../../Gui/sliceform_gui/commands.py" line="296"/>
         <source>Save report.json...</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../Gui/sliceform_gui/commands.py" line="306"/>
+        <location filename="../../Gui/sliceform_gui/commands.py" line="308"/>
         <source>Save report</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../Gui/sliceform_gui/commands.py" line="306"/>
+        <location filename="../../Gui/sliceform_gui/commands.py" line="308"/>
         <source>JSON (*.json)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../Gui/sliceform_gui/task_panel.py" line="21"/>
+        <location filename="../../Gui/sliceform_gui/task_panel.py" line="22"/>
         <source>Custom sheet width</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../Gui/sliceform_gui/task_panel.py" line="22"/>
+        <location filename="../../Gui/sliceform_gui/task_panel.py" line="23"/>
         <source>Custom sheet height</source>
         <translation type="unfinished"></translation>
     </message>
@@ -333,17 +333,17 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../Gui/sliceform_gui/task_panel.py" line="58"/>
+        <location filename="../../Gui/sliceform_gui/task_panel.py" line="52"/>
         <source>Sliceform</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../Gui/sliceform_gui/task_panel.py" line="88"/>
+        <location filename="../../Gui/sliceform_gui/task_panel.py" line="73"/>
         <source>Recompute</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../Gui/sliceform_gui/task_panel.py" line="120"/>
+        <location filename="../../Gui/sliceform_gui/task_panel.py" line="106"/>
         <source>Not computed yet: press Recompute.</source>
         <translation type="unfinished"></translation>
     </message>
@@ -358,17 +358,17 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../App/sliceform_app/feature.py" line="100"/>
+        <location filename="../../App/sliceform_app/feature.py" line="106"/>
         <source>the sliceform has no Source: link a solid, body or mesh</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../App/sliceform_app/feature.py" line="351"/>
+        <location filename="../../App/sliceform_app/feature.py" line="373"/>
         <source>cannot be built: </source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../App/sliceform_app/feature.py" line="351"/>
+        <location filename="../../App/sliceform_app/feature.py" line="373"/>
         <source>see the report</source>
         <translation type="unfinished"></translation>
     </message>
@@ -487,84 +487,21 @@
         <source>this engraving&apos;s patch or sliceform was deleted</source>
         <translation type="unfinished"></translation>
     </message>
-</context>
-<context>
-    <name>SliceformPreferences</name>
     <message>
-        <location filename="../ui/preferences.ui" line="8"/>
-        <source>Sliceform</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location filename="../ui/preferences.ui" line="12"/>
+        <location filename="../../Gui/sliceform_gui/preferences.py" line="31"/>
         <source>Defaults for new sliceforms (material, sheets, slicing)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location filename="../ui/preferences.ui" line="14"/>
-        <source>Material thickness</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location filename="../ui/preferences.ui" line="23"/>
-        <source> mm</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location filename="../ui/preferences.ui" line="16"/>
-        <source>Slot clearance</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location filename="../ui/preferences.ui" line="18"/>
-        <source>Cutter kerf</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location filename="../ui/preferences.ui" line="20"/>
-        <source>Sheet margin</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location filename="../ui/preferences.ui" line="22"/>
-        <source>Spacing between patches</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location filename="../ui/preferences.ui" line="24"/>
-        <source>Slices per direction</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location filename="../ui/preferences.ui" line="26"/>
-        <source>Sheet size</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location filename="../ui/preferences.ui" line="27"/>
-        <source>A4</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location filename="../ui/preferences.ui" line="27"/>
-        <source>A3</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location filename="../ui/preferences.ui" line="27"/>
-        <source>Letter</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
 <context>
     <name>Sliceform_AssemblySteps</name>
     <message>
-        <location filename="../../Gui/sliceform_gui/commands.py" line="322"/>
+        <location filename="../../Gui/sliceform_gui/commands.py" line="324"/>
         <source>Assembly steps</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../Gui/sliceform_gui/commands.py" line="323"/>
+        <location filename="../../Gui/sliceform_gui/commands.py" line="325"/>
         <source>Step through the selected sliceform&apos;s assembly order: the patches placed so far, the new one in orange, and the partners its slots go onto (a display mode: the document is not changed)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -624,12 +561,12 @@
 <context>
     <name>Sliceform_Report</name>
     <message>
-        <location filename="../../Gui/sliceform_gui/commands.py" line="278"/>
+        <location filename="../../Gui/sliceform_gui/commands.py" line="280"/>
         <source>Show report</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../Gui/sliceform_gui/commands.py" line="279"/>
+        <location filename="../../Gui/sliceform_gui/commands.py" line="281"/>
         <source>Show the selected sliceform&apos;s checks: stability certificate, interlocks, split patches, slot-to-edge distance, hinge lengths, quality, sheets; save report.json</source>
         <translation type="unfinished"></translation>
     </message>

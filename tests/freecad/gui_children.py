@@ -163,21 +163,21 @@ try:
     fields, recompute, cancel = task_panel_widgets()
     # The rows come from the core's parameter schema, with their units.
     # Lengths and angles in FreeCAD's own quantity fields: typed in any unit, read in mm.
-    from sliceform_gui import task_panel
+    from sliceform_gui import fields as number_fields
 
     thickness = fields["Thickness"]
     assert thickness.metaObject().className() == "Gui::QuantitySpinBox", thickness.metaObject().className()
     assert fields["Fold angle"].metaObject().className() == "Gui::QuantitySpinBox"
     assert fields["Slices"].maximum() == 4096, fields
-    assert abs(task_panel.field_value(thickness) - 0.3) < 1e-9, task_panel.field_value(thickness)
+    assert abs(number_fields.value(thickness) - 0.3) < 1e-9, number_fields.value(thickness)
     thickness.selectAll()
     type_into(thickness, "0.03 cm")
     FreeCADGui.updateGui()
-    assert abs(task_panel.field_value(thickness) - 0.3) < 1e-9, (thickness.text(), task_panel.field_value(thickness))
+    assert abs(number_fields.value(thickness) - 0.3) < 1e-9, (thickness.text(), number_fields.value(thickness))
     thickness.selectAll()
     type_into(thickness, "0.02 in")
     FreeCADGui.updateGui()
-    assert abs(task_panel.field_value(thickness) - 0.508) < 1e-9, (thickness.text(), task_panel.field_value(thickness))
+    assert abs(number_fields.value(thickness) - 0.508) < 1e-9, (thickness.text(), number_fields.value(thickness))
     thickness.setProperty("rawValue", 0.3)
     # Nothing clipped in the narrow Combo View: every field ends inside the task view.
     area = fields["Thickness"]

@@ -193,6 +193,32 @@ try:
     found = FreeCADGui.getIcon("preferences-sliceform").pixmap(32, 32).toImage()
     missing = FreeCADGui.getIcon("preferences-no-such-page").pixmap(32, 32).toImage()
     assert not found.isNull() and found != missing, "no preferences icon"
+    # The page itself, made from the schema: each field's range and default are the
+    # schema's, lengths in quantity fields; what it saves is what a new sliceform takes.
+    from sliceform_app import feature, parameters
+    from sliceform_gui import fields, preferences
+
+    page = preferences.PreferencesPage()
+    page.loadSettings()
+    by_property = {s["property"]: s for s in parameters.schema() if s["property"]}
+    assert sorted(page.fields) == sorted(feature.PREFERRED), sorted(page.fields)
+    thickness = page.fields["Thickness"]
+    assert thickness.metaObject().className() == "Gui::QuantitySpinBox", thickness.metaObject().className()
+    assert abs(float(thickness.property("maximum")) - by_property["Thickness"]["max"]) < 1e-9
+    assert abs(fields.value(thickness) - by_property["Thickness"]["default"]) < 1e-9, fields.value(thickness)
+    assert page.fields["Slices"].maximum() == by_property["Slices"]["max"], page.fields["Slices"].maximum()
+    assert fields.value(page.fields["Slices"]) == 32, fields.value(page.fields["Slices"])  # set above
+    sheet = page.fields["SheetSize"]
+    assert [sheet.itemText(i) for i in range(sheet.count())] == by_property["SheetSize"]["choices"]
+    fields.set_value(thickness, 3)
+    sheet.setCurrentIndex(sheet.findText("A3"))
+    page.saveSettings()
+    chosen = feature.preferred_properties()
+    assert chosen["Thickness"] == 3 and chosen["SheetSize"] == "A3", chosen
+    group = FreeCAD.ParamGet(feature.PREFERENCES)
+    group.RemFloat("Thickness")
+    group.RemInt("SheetSize")
+    del page, thickness, sheet
 
     # The 3D view: the sliceform beside its source.
     FreeCADGui.Selection.clearSelection()
