@@ -324,6 +324,28 @@ try:
     tree = max(FreeCADGui.getMainWindow().findChildren(QtGui.QTreeWidget), key=lambda t: t.topLevelItemCount())
     item = tree_item(tree, sliceform.Label)
     assert item.childCount() == sliceform.PatchCount + sliceform.SheetCount, "tree children after reopen"  # patches, pages
+
+    # 5. An edit that cannot be made: the feature's error state, in the Report view once, in
+    # the properties' words and with no traceback (a picture for the closing note).
+    dock = FreeCADGui.getMainWindow().findChild(QtGui.QDockWidget, "Report view")
+    dock.show()
+    output = dock.widget()
+    output.clear()
+    doc.openTransaction("Edit SheetSize")
+    sliceform.SheetSize = "Custom"
+    sliceform.SheetWidth, sliceform.SheetHeight = 60, 60
+    doc.recompute()
+    doc.commitTransaction()
+    wait()
+    status = sliceform.getStatusString()
+    shown = output.toPlainText()
+    assert not sliceform.isValid() and "SheetSize" in status and "--" not in status, status
+    assert "Traceback" not in shown and shown.count("SheetSize") == 1, shown
+    FreeCADGui.Selection.clearSelection()
+    FreeCADGui.Selection.addSelection(sliceform)
+    wait()
+    if png:
+        FreeCADGui.getMainWindow().grab().save(png.replace(".png", "_error.png"))
     outcome = "ok"
 except Exception:
     outcome = traceback.format_exc()
