@@ -187,8 +187,9 @@ class Patch(_Child):
         patches = proxy.flat_patches(obj.Sliceform)
         if obj.Index >= len(patches):
             return  # left over from a larger design until the sync that follows removes it
-        # The feature recomputes for FoldAngle too: the same design needs no new shape.
-        built = (proxy.key, obj.Index)
+        # The same design needs no new shape, nor does the same design laid out on another
+        # sheet (a sheet, margin or spacing edit): a patch's face does not depend on them.
+        built = (proxy.unlaid.get(proxy.key, proxy.key), obj.Index)
         if getattr(self, "built", None) == built and not obj.Shape.isNull():
             return
         obj.Shape = patch_shape(patches[obj.Index])
