@@ -32,7 +32,7 @@ STAGES = ["slice", "reeb", "gca", "frames", "certificate", "quality", "realizati
           "check", "certificate again", "layout"]
 # What writing each file costs, as timings.json names it, then their sum.
 EXPORT = ["export drawings", "export files", "export STEP, waiting for it", "export"] + [
-    "export %s, in parallel" % f for f in ("report", "sheets PDF PNG SVG", "DXF", "BREP", "glTF", "assembly PNG",
+    "export %s, in parallel" % f for f in ("report", "booklet", "sheets PDF", "sheets PNG", "SVG", "DXF", "BREP", "glTF", "assembly PNG",
                                            "STEP")]
 
 

@@ -379,5 +379,27 @@ TEST(SheetSvg, SizeAndViewBoxAreMillimetres) {
       << text.str().substr(0, 300);
 }
 
+// A sheet's SVG has the same bytes whatever cairo drew before it in the process: the files
+// are written side by side, and cairo numbers surfaces from one counter for the process.
+TEST(Layout, SvgSheetBytesDoNotDependOnWhatWasDrawnBefore) {
+  const Design& d = sphere();
+  test::TempDir dir;
+  const std::vector<SheetDrawing> sheets = sheetDrawings(d.layout);
+  const auto bytes = [](const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::stringstream text;
+    text << in.rdbuf();
+    return text.str();
+  };
+  writeSheetSvg(sheets.front(), d.layout.sheet, dir.file("first.svg"));
+  writeSheetsPdf(sheets, d.layout.sheet, dir.file("between.pdf"));
+  writeSheetsPng(sheets, d.layout.sheet, dir.file("between.png"));
+  writeSheetSvg(sheets.front(), d.layout.sheet, dir.file("second.svg"));
+  const std::string first = bytes(dir.file("first.svg"));
+  EXPECT_GT(first.size(), 1000u);
+  EXPECT_EQ(first, bytes(dir.file("second.svg")));
+  EXPECT_NE(first.find("id=\"surface1\""), std::string::npos) << first.substr(0, 400);
+}
+
 }  // namespace
 }  // namespace sliceform

@@ -87,33 +87,32 @@ DesignFiles DesignFilesWriter::finish(const Model& model, const DesignParams& pa
   const std::vector<Panel3> panels = assemblyPanels(d.arrangement, d.patches, foldAngle_);
   clock.lap("export drawings");
   // The files are independent of each other: written on all cores, the longest first.
-  // cairo numbers every surface it makes from one counter for the whole process, and the
-  // SVG files carry that number; so everything drawn with cairo is one task, in a fixed
-  // order, and the assembly picture is drawn without cairo and written after it.
+  // (cairo numbers the surfaces of the whole process from one counter; the SVG files,
+  // which would carry that number, renumber theirs from 1.)
   struct File {
     const char* stage;
     std::function<void()> write;
   };
   Picture picture;
   std::vector<File> work{
-      {"export assembly PNG, in parallel", [&] { picture = drawAssembly(panels); }},
-      {"export sheets PDF PNG SVG, in parallel",
-       [&, pdf = path("sheets.pdf"), png = path("sheets.png"), booklet = path("instructions.pdf")] {
-         writeSheetsPdf(sheets, d.layout.sheet, pdf);
-         writeSheetsPng(sheets, d.layout.sheet, png);
-         for (size_t k = 0; k < sheets.size(); ++k)
-           writeSheetSvg(sheets[k], d.layout.sheet,
-                         (dir / sheetFileName(static_cast<int>(k), ".svg")).string());
-         // After the SVGs: their bytes carry cairo's surface numbers.
+      {"export booklet, in parallel",
+       [&, booklet = path("instructions.pdf")] {
          writeInstructionsPdf(d, panels, fs::path(model.source).filename().string(), booklet);
        }},
+      {"export assembly PNG, in parallel", [&] { picture = drawAssembly(panels); }},
+      {"export sheets PDF, in parallel",
+       [&, pdf = path("sheets.pdf")] { writeSheetsPdf(sheets, d.layout.sheet, pdf); }},
+      {"export sheets PNG, in parallel",
+       [&, png = path("sheets.png")] { writeSheetsPng(sheets, d.layout.sheet, png); }},
       {"export glTF, in parallel", [&, to = path("assembly.glb")] { writeGltf(panels, to); }},
       {"export BREP, in parallel", [&, to = path("assembly.brep")] { writeShape(assembly_, to); }},
       {"export report, in parallel",
        [&, to = path("report.json")] { writeJson(reportJson(model, params, d), to); }},
   };
   for (size_t k = 0; k < sheets.size(); ++k) {
-    path(sheetFileName(static_cast<int>(k), ".svg"));
+    work.push_back({"export SVG, in parallel", [&, k, to = path(sheetFileName(static_cast<int>(k), ".svg"))] {
+                      writeSheetSvg(sheets[k], d.layout.sheet, to);
+                    }});
     work.push_back({"export DXF, in parallel", [&, k, to = path(sheetFileName(static_cast<int>(k), ".dxf"))] {
                       writeSheetDxf(sheets[k], d.layout.sheet, to);
                     }});

@@ -8,7 +8,10 @@
 #include <cairo.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
+#include <fstream>
+#include <map>
 #include <string>
 
 #include "layout/labels.hpp"
@@ -109,14 +112,54 @@ void writeSheetsPdf(const std::vector<SheetDrawing>& sheets, const SheetSpec& sp
   });
 }
 
+namespace {
+
+// cairo's surface ids in an SVG ("surface21"), renumbered from 1 in order of appearance.
+std::string numberedSurfacesFromOne(const std::string& svg) {
+  std::string out;
+  out.reserve(svg.size());
+  std::map<std::string, std::string> renamed;
+  const std::string word = "surface";
+  size_t from = 0;
+  for (size_t at = svg.find(word); at != std::string::npos; at = svg.find(word, from)) {
+    size_t end = at + word.size();
+    while (end < svg.size() && std::isdigit(static_cast<unsigned char>(svg[end]))) ++end;
+    out.append(svg, from, end - from);
+    if (end > at + word.size()) {
+      const std::string number = svg.substr(at + word.size(), end - at - word.size());
+      const auto [it, added] = renamed.emplace(number, std::to_string(renamed.size() + 1));
+      out.resize(out.size() - number.size());
+      out += it->second;
+    }
+    from = end;
+  }
+  out.append(svg, from, std::string::npos);
+  return out;
+}
+
+}  // namespace
+
 void writeSheetSvg(const SheetDrawing& sheet, const SheetSpec& spec, const std::string& path) {
+  // cairo names an SVG's surfaces by a counter shared by every surface the process makes,
+  // so the bytes of a sheet would depend on what else was drawn, and in which order; the
+  // files are drawn beside others (the booklet, the PDF): drawn into memory, the surfaces
+  // renumbered from 1, then written.
+  std::string svg;
+  const auto append = [](void* into, const unsigned char* data, unsigned int length) {
+    static_cast<std::string*>(into)->append(reinterpret_cast<const char*>(data), length);
+    return CAIRO_STATUS_SUCCESS;
+  };
+  // With the document unit set to mm, cairo writes width="…mm" and a viewBox in the
+  // surface's own units, which we make millimetres: one user unit is one mm.
+  cairo_surface_t* surface = cairo_svg_surface_create_for_stream(append, &svg, spec.width, spec.height);
+  checkSurface(surface, path);
+  cairo_svg_surface_set_document_unit(surface, CAIRO_SVG_UNIT_MM);
+  drawAndFinish(surface, path, [&](cairo_t* cr) { drawSheet(cr, sheet, spec, 1); });
+  svg = numberedSurfacesFromOne(svg);
   writeAtomically(path, [&](const std::string& temporary) {
-    // With the document unit set to mm, cairo writes width="…mm" and a viewBox in the
-    // surface's own units, which we make millimetres: one user unit is one mm.
-    cairo_surface_t* surface = cairo_svg_surface_create(temporary.c_str(), spec.width, spec.height);
-    checkSurface(surface, path);
-    cairo_svg_surface_set_document_unit(surface, CAIRO_SVG_UNIT_MM);
-    drawAndFinish(surface, path, [&](cairo_t* cr) { drawSheet(cr, sheet, spec, 1); });
+    std::ofstream file(temporary, std::ios::binary);
+    file.write(svg.data(), static_cast<std::streamsize>(svg.size()));
+    if (!file.flush()) throw Error(ErrorKind::Io, "cannot write " + path);
   });
 }
 
