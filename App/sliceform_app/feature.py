@@ -349,6 +349,14 @@ class Sliceform:
             obj.touch()
             return
         self._pose(obj, self.design)
+        # What the user built on the sliceform's shape (a compound, a cut) follows the new
+        # pose at the next recompute; its own children do not depend on the pose.
+        from sliceform_app import children
+
+        ours = {o.Name for o in children.owned_objects(obj)}
+        for other in obj.InList:
+            if other.Name not in ours:
+                other.touch()
 
     def _pose(self, obj, design):
         shape = Part.Shape()
