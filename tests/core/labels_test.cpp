@@ -115,25 +115,27 @@ TEST(PartnerLabels, BesideTheSlotWhereThereIsRoom) {
 // margins anywhere along it, so no label beside the slot or on its line. Its label stands
 // in the body of the patch, and an engraved leader runs from the slot's root along the arm,
 // round the corner, to it: over paper all the way, crossing no other label.
+// A body 20 x 20 mm and an arm out of its right side between heights y0 and y1, its far
+// end the outline `end` (from the arm's bottom edge round to its top edge), and a slot
+// `width` wide cut down from the arm's top edge at x to height 10.
+Region2d bodyWithArm(double y0, double y1, const Region2d::Loop& end, double x, double width) {
+  Region2d::Loop outline{{0, 0}, {20, 0}, {20, y0}};
+  outline.insert(outline.end(), end.begin(), end.end());
+  outline.insert(outline.end(), {{x + width / 2, y1},
+                                 {x + width / 2, 10},
+                                 {x - width / 2, 10},
+                                 {x - width / 2, y1},
+                                 {20, y1},
+                                 {20, 20},
+                                 {0, 20}});
+  return Region2d::fromLoops({outline});
+}
+
 TEST(PartnerLabels, LeaderFromASlotAtANarrowTip) {
   // A body 20 x 20 mm, its arm 15 mm long to the right and bent down at its end; the slot
   // is cut down from the arm's top edge near its end, 0.5 mm wide, to the arm's middle.
   const double y0 = 9.1, y1 = 10.9, x = 32, width = 0.5;
-  const Region2d::Loop outline{{0, 0},
-                               {20, 0},
-                               {20, y0},
-                               {36, y0},
-                               {36, y0 - 6},
-                               {37.8, y0 - 6},
-                               {37.8, y1},
-                               {x + width / 2, y1},
-                               {x + width / 2, 10},
-                               {x - width / 2, 10},
-                               {x - width / 2, y1},
-                               {20, y1},
-                               {20, 20},
-                               {0, 20}};
-  const Region2d paper = Region2d::fromLoops({outline});
+  const Region2d paper = bodyWithArm(y0, y1, {{36, y0}, {36, y0 - 6}, {37.8, y0 - 6}, {37.8, y1}}, x, width);
   const std::vector<LabelSpot> spots{{"V7", x, {y0, y1}, 10.45, width, {10, y1}}};
   const PatchLabels labels = labelPatch(labelPaper(paper), "U3", spots);
   EXPECT_EQ(labels.missing, 0);
@@ -183,18 +185,7 @@ TEST(PartnerLabels, BesideTheSlotInAFingerBeyondALeadersReach) {
   // its top edge 3 mm from its end: a 1 mm label with its 0.6 mm margins is 2.2 mm wide, and
   // the body is more than a leader's 25 mm away. Only the leaders' 0.3 mm margin fits it.
   const double y0 = 9, y1 = 11, x = 55, width = 0.5;
-  const Region2d paper = Region2d::fromLoops({{{0, 0},
-                                               {20, 0},
-                                               {20, y0},
-                                               {58, y0},
-                                               {58, y1},
-                                               {x + width / 2, y1},
-                                               {x + width / 2, 10},
-                                               {x - width / 2, 10},
-                                               {x - width / 2, y1},
-                                               {20, y1},
-                                               {20, 20},
-                                               {0, 20}}});
+  const Region2d paper = bodyWithArm(y0, y1, {{58, y0}, {58, y1}}, x, width);
   const std::vector<LabelSpot> spots{{"V7", x, {y0, y1}, 10.5, width, {10, y1}}};
   const PatchLabels labels = labelPatch(labelPaper(paper), "U3", spots);
   EXPECT_EQ(labels.missing, 0);
