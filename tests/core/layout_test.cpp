@@ -398,7 +398,8 @@ TEST(Layout, SvgSheetBytesDoNotDependOnWhatWasDrawnBefore) {
   const std::string first = bytes(dir.file("first.svg"));
   EXPECT_GT(first.size(), 1000u);
   EXPECT_EQ(first, bytes(dir.file("second.svg")));
-  EXPECT_NE(first.find("id=\"surface1\""), std::string::npos) << first.substr(0, 400);
+  // cairo 1.16 names its surface ("surface21"), renumbered to surface1; 1.18 names none.
+  EXPECT_FALSE(std::regex_search(first, std::regex("surface([02-9]|1[0-9])"))) << first.substr(0, 400);
 }
 
 }  // namespace
