@@ -350,12 +350,10 @@ class Sliceform:
             return
         self._pose(obj, self.design)
         # What the user built on the sliceform's shape (a compound, a cut) follows the new
-        # pose at the next recompute; its own children do not depend on the pose.
-        from sliceform_app import children
-
-        ours = {o.Name for o in children.owned_objects(obj)}
+        # pose at the next recompute; its own children (the patches and pages, which link to
+        # it by their Sliceform property) do not depend on the pose.
         for other in obj.InList:
-            if other.Name not in ours:
+            if getattr(other, "Sliceform", None) != obj:
                 other.touch()
 
     def _pose(self, obj, design):

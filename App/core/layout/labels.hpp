@@ -43,10 +43,11 @@ struct LabelPaper {
 };
 LabelPaper labelPaper(const Region2d& paper);
 
-// The patch id at the deepest spot that holds it (up to 8 mm high, and `maxHeight`), horizontal if it fits
-// there, else upright, clear of `taken` labels; empty strokes when no box of 1 mm fits.
 // The sizes a patch id is tried at, largest first, mm.
 const std::vector<double>& nameHeights();
+// The patch id at the deepest spot that holds it (up to 8 mm high, and `maxHeight`),
+// horizontal if it fits there, else upright, clear of `taken` labels; empty strokes when
+// no box of 1 mm fits.
 Label placeName(const LabelPaper& paper, const std::string& id, const std::vector<Label>& taken = {},
                 double maxHeight = 8.0);
 Label placeName(const Region2d& paper, const std::string& id);
