@@ -73,19 +73,24 @@ void BM_sliceMesh(benchmark::State& state) {
 // sections are the faces (what the exact patches use); "measured" adds the adaptive area
 // integration and the polygons that `sliceform slice --method exact` reports.
 void sliceBrepBench(benchmark::State& state, const std::string& which, sf::SliceDetail detail,
-                    sf::SectionRoute route = sf::SectionRoute::Curves) {
+                    sf::SectionRoute route = sf::SectionRoute::FaceByFace) {
   const sf::Model* m = model(which);
   if (!m) return state.SkipWithError(("missing " + which).c_str());
   const int n = static_cast<int>(state.range(0));
   double ms = 0;
+  int made = 0;
   for (auto _ : state) {
     const auto start = std::chrono::steady_clock::now();
+    made = 0;
     for (const sf::SliceFrame& f : kFrames)
-      benchmark::DoNotOptimize(sf::sliceBrep(m->shape, f, sf::slicePositions(m->mesh, f, n),
-                                             sf::exactDeflection(m->meshDeflection), detail, route));
+      for (const sf::ExactSlice& s : sf::sliceBrep(m->shape, f, sf::slicePositions(m->mesh, f, n),
+                                                   sf::exactDeflection(m->meshDeflection), detail, route))
+        made += s.route == route;
     ms += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   }
   state.counters["ms_per_slice"] = ms / (static_cast<double>(state.iterations()) * 2 * n);
+  // The share of planes the route asked for made itself (the rest fell back).
+  state.counters["own_share"] = made / (2.0 * n);
 }
 void BM_sliceBrep_cad(benchmark::State& state) {
   sliceBrepBench(state, kCad, sf::SliceDetail::FacesOnly);
@@ -184,6 +189,13 @@ int main(int argc, char** argv) {
   for (const std::string& part : cadParts()) {
     const std::string name = std::filesystem::path(part).filename().string();
     benchmark::RegisterBenchmark(("sections/" + name).c_str(),
+                                 [part](benchmark::State& s) {
+                                   sliceBrepBench(s, part, sf::SliceDetail::FacesOnly,
+                                                  sf::SectionRoute::FaceByFace);
+                                 })
+        ->Arg(128)
+        ->Apply(once);
+    benchmark::RegisterBenchmark(("sections_curves/" + name).c_str(),
                                  [part](benchmark::State& s) {
                                    sliceBrepBench(s, part, sf::SliceDetail::FacesOnly,
                                                   sf::SectionRoute::Curves);

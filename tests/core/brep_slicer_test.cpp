@@ -5,6 +5,7 @@
 #include <BRepAdaptor_Curve.hxx>
 #include <BRepGProp.hxx>
 #include <BRepPrimAPI_MakeBox.hxx>
+#include <BRepPrimAPI_MakeCone.hxx>
 #include <BRepPrimAPI_MakeCylinder.hxx>
 #include <BRep_Builder.hxx>
 #include <GCPnts_AbscissaPoint.hxx>
@@ -28,6 +29,12 @@ namespace {
 constexpr double kRel = 1e-9;
 
 // Total length of the section's edges, from OCCT.
+// A cone, axis along z, with a cylindrical bore along y through it.
+TopoDS_Shape coneWithBore() {
+  const TopoDS_Shape cone = BRepPrimAPI_MakeCone(gp_Ax2(gp_Pnt(0, 0, 0), gp_Dir(0, 0, 1)), 12, 4, 20).Shape();
+  return test::cut(cone, BRepPrimAPI_MakeCylinder(gp_Ax2(gp_Pnt(0, -20, 8), gp_Dir(0, 1, 0)), 2, 40).Shape());
+}
+
 double perimeter(const TopoDS_Shape& faces) {
   GProp_GProps props;
   BRepGProp::LinearProperties(faces, props);
@@ -253,45 +260,70 @@ TEST(BrepSlicer, PlaneMissingTheSolidGivesNothing) {
   }
 }
 
-// The section-curve route (slicing/section_faces.hpp) on solids with holes and a void: every
-// plane is made by it, not by the Common it falls back to, its faces have the Common's areas
-// and holes, and the mesh's polygon sections within the mesh deflection along the outline.
-TEST(BrepSlicer, SectionCurvesMakeTheFacesOfSolidsWithHoles) {
+// The three section routes on solids with holes and a void, each plane cut by the route
+// asked for (not the ones it falls back to): our own face-by-face intersections
+// (slicing/face_by_face.hpp) and OCCT's section curves (slicing/section_faces.hpp) give the
+// Common's areas and holes, and the mesh's polygon sections within the mesh deflection
+// along the outline. The cases reach every kind of curve the face-by-face route makes:
+// lines, circles, ellipses (cylinders across), a cone's hyperbolas; a torus cut along its
+// axis, which no conic describes, goes on to the section curves.
+TEST(BrepSlicer, SectionRoutesMakeTheFacesOfSolidsWithHoles) {
   const double d = 0.01;
   struct Case {
     const char* name;
     TopoDS_Shape shape;
     Vec3 normal;
+    bool conics = true;  // whether the face-by-face route solves its faces
   } cases[] = {{"holed box along the holes", holedBox(), {0, 0, 1}},
                {"holed box across", holedBox(), {1, 0.2, 0}},
                {"hollow sphere", test::makeHollowSphere(10, 6), {0, 1, 1}},
-               {"torus", test::makeTorus(10, 3), {0, 0, 1}}};
+               {"torus across its axis", test::makeTorus(10, 3), {0, 0, 1}},
+               {"torus along its axis", test::makeTorus(10, 3), {1, 0, 0}, false},
+               {"cone with a bore, along its axis", coneWithBore(), {1, 0, 0}}};
   for (const Case& c : cases) {
     SCOPED_TRACE(c.name);
     const Model model = modelFromShape(c.shape, c.name, d);
     const SliceFrame frame = makeSliceFrame(c.normal);
     const Interval range = model.mesh.extent(frame.normal);
-    const std::vector<double> positions = uniformPositions(range.lo, range.hi, 9);
-    const std::vector<ExactSlice> curves =
-        sliceBrep(model.shape, frame, positions, d / 10, SliceDetail::Measured, SectionRoute::Curves);
+    // Eight: none through the middle, where the torus has its seam edge.
+    const std::vector<double> positions = uniformPositions(range.lo, range.hi, 8);
     const std::vector<ExactSlice> common =
         sliceBrep(model.shape, frame, positions, d / 10, SliceDetail::Measured, SectionRoute::Common);
     const SliceSet mesh = sliceMesh(model.mesh, frame, positions);
-    size_t nested = 0;  // holes and outlines beside another
-    for (size_t i = 0; i < positions.size(); ++i) {
-      const ExactSlice& s = curves[i];
-      EXPECT_EQ(s.route, SectionRoute::Curves) << "at " << positions[i];
-      EXPECT_EQ(common[i].route, SectionRoute::Common);
-      ASSERT_FALSE(s.faces.IsNull()) << "at " << positions[i];
-      EXPECT_NEAR(s.area, common[i].area, 1e-7 * common[i].area) << "at " << positions[i];
-      EXPECT_EQ(s.region.holeCount(), common[i].region.holeCount()) << "at " << positions[i];
-      EXPECT_EQ(s.region.components().size(), common[i].region.components().size());
-      // The mesh lies within d of the surface: its section within d of the exact one.
-      EXPECT_NEAR(mesh.slices[i].region.area(), s.area, perimeter(s.faces) * d) << "at " << positions[i];
-      nested += s.region.holeCount() + s.region.components().size() - 1;
+    for (const SectionRoute route : {SectionRoute::FaceByFace, SectionRoute::Curves}) {
+      SCOPED_TRACE(route == SectionRoute::FaceByFace ? "face by face" : "section curves");
+      const std::vector<ExactSlice> made =
+          sliceBrep(model.shape, frame, positions, d / 10, SliceDetail::Measured, route);
+      size_t nested = 0;  // holes and outlines beside another
+      for (size_t i = 0; i < positions.size(); ++i) {
+        const ExactSlice& s = made[i];
+        EXPECT_EQ(s.route, c.conics ? route : SectionRoute::Curves) << "at " << positions[i];
+        EXPECT_EQ(common[i].route, SectionRoute::Common);
+        ASSERT_FALSE(s.faces.IsNull()) << "at " << positions[i];
+        EXPECT_NEAR(s.area, common[i].area, 1e-7 * common[i].area) << "at " << positions[i];
+        EXPECT_EQ(s.region.holeCount(), common[i].region.holeCount()) << "at " << positions[i];
+        EXPECT_EQ(s.region.components().size(), common[i].region.components().size());
+        // The mesh lies within d of the surface: its section within d of the exact one.
+        EXPECT_NEAR(mesh.slices[i].region.area(), s.area, perimeter(s.faces) * d) << "at " << positions[i];
+        nested += s.region.holeCount() + s.region.components().size() - 1;
+      }
+      EXPECT_GT(nested, 0u);  // the nesting was tested
     }
-    EXPECT_GT(nested, 0u);  // the nesting was tested
   }
+}
+
+// Where the face-by-face route would have to guess it leaves the plane to the section
+// curves: a plane through a vertex of the solid (every corner of a box at z = 0 and 10)
+// and a plane on a face. The faces are still the Common's.
+TEST(BrepSlicer, FaceByFaceLeavesAPlaneThroughAVertexToTheSectionCurves) {
+  const TopoDS_Shape box = BRepPrimAPI_MakeBox(gp_Pnt(0, 0, 0), 20, 30, 10).Shape();
+  const SliceFrame frame = makeSliceFrame({0, 0, 1});
+  const std::vector<double> positions = {10, 5, 0};
+  const std::vector<ExactSlice> made = sliceBrep(box, frame, positions, 1e-3);
+  EXPECT_NE(made[0].route, SectionRoute::FaceByFace);
+  EXPECT_EQ(made[1].route, SectionRoute::FaceByFace);
+  EXPECT_NE(made[2].route, SectionRoute::FaceByFace);
+  for (const ExactSlice& s : made) EXPECT_NEAR(s.area, 600, 1e-6) << "at " << s.position;
 }
 
 }  // namespace

@@ -25,10 +25,12 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <memory>
 #include <optional>
 #include <sstream>
 #include <thread>
 
+#include "slicing/face_by_face.hpp"
 #include "slicing/section_faces.hpp"
 #include "support/error.hpp"
 #include "support/occt_guard.hpp"
@@ -126,6 +128,7 @@ std::vector<TopoDS_Shape> commonFaces(const std::vector<TopoDS_Shape>& solids, c
 struct Piece {
   TopoDS_Shape solid;
   double lo = 0, hi = 0;
+  std::shared_ptr<const FaceByFace> faces;  // null: the route does not start there
 };
 
 // One batch of planes, solid by solid, each solid only at the planes that reach it (a
@@ -139,7 +142,8 @@ std::vector<ExactSlice> sliceBatch(const std::vector<Piece>& pieces, const Slice
   BRep_Builder builder;
   std::vector<TopoDS_Compound> faces(n);
   for (TopoDS_Compound& f : faces) builder.MakeCompound(f);
-  std::vector<bool> any(n, false), byCurves(n, route == SectionRoute::Curves);
+  std::vector<bool> any(n, false);
+  std::vector<SectionRoute> routes(n, route);
   for (const Piece& piece : pieces) {
     std::vector<size_t> meeting;
     std::vector<double> at;
@@ -148,16 +152,20 @@ std::vector<ExactSlice> sliceBatch(const std::vector<Piece>& pieces, const Slice
         meeting.push_back(k), at.push_back(positions[k]);
     if (meeting.empty()) continue;
     std::vector<std::optional<TopoDS_Shape>> made(at.size());
-    if (route == SectionRoute::Curves) {
+    if (route != SectionRoute::Common) {
+      std::vector<std::optional<SectionFaces>> curves(at.size());
       try {
-        made = sectionFaces({piece.solid}, frame, at, centre, halfSize, deflection);
+        curves = sectionFaces(piece.solid, piece.faces.get(), frame, at, centre, halfSize, deflection);
       } catch (const Standard_Failure&) {
         // The Common below makes every plane of the batch.
       }
+      // A plane's route is the last one any of its solids needed.
+      for (size_t i = 0; i < at.size(); ++i)
+        if (curves[i]) made[i] = curves[i]->faces, routes[meeting[i]] = std::max(routes[meeting[i]], curves[i]->route);
     }
     std::vector<double> rest;
     for (size_t i = 0; i < at.size(); ++i)
-      if (!made[i]) rest.push_back(at[i]), byCurves[meeting[i]] = false;
+      if (!made[i]) rest.push_back(at[i]), routes[meeting[i]] = SectionRoute::Common;
     if (!rest.empty()) {
       const std::vector<TopoDS_Shape> cut = commonFaces({piece.solid}, frame, rest, centre, halfSize);
       for (size_t i = 0, j = 0; i < at.size(); ++i)
@@ -173,7 +181,7 @@ std::vector<ExactSlice> sliceBatch(const std::vector<Piece>& pieces, const Slice
   for (size_t k = 0; k < n; ++k) {
     ExactSlice& slice = out[k];
     slice.position = positions[k];
-    slice.route = byCurves[k] ? SectionRoute::Curves : SectionRoute::Common;
+    slice.route = routes[k];
     if (!any[k]) continue;
     slice.faces = faces[k];
     if (detail == SliceDetail::FacesOnly) continue;
@@ -218,8 +226,8 @@ std::vector<ExactSlice> sliceBrep(const TopoDS_Shape& solid, const SliceFrame& f
   // overlapping faces.
   std::vector<Piece> solids;
   for (TopExp_Explorer it(solid, TopAbs_SOLID); it.More(); it.Next())
-    if (TopExp_Explorer(it.Current(), TopAbs_FACE).More()) solids.push_back({it.Current()});
-  if (solids.empty() && !TopExp_Explorer(solid, TopAbs_SOLID).More()) solids.push_back({solid});
+    if (TopExp_Explorer(it.Current(), TopAbs_FACE).More()) solids.push_back({it.Current(), 0, 0, nullptr});
+  if (solids.empty() && !TopExp_Explorer(solid, TopAbs_SOLID).More()) solids.push_back({solid, 0, 0, nullptr});
   occtGuard("measuring the solids", [&] {
     for (Piece& piece : solids) {
       Bnd_Box own;
@@ -231,6 +239,8 @@ std::vector<ExactSlice> sliceBrep(const TopoDS_Shape& solid, const SliceFrame& f
             const double p = frame.position({x, y, z});
             piece.lo = std::min(piece.lo, p), piece.hi = std::max(piece.hi, p);
           }
+      if (route == SectionRoute::FaceByFace)
+        piece.faces = std::make_shared<const FaceByFace>(piece.solid, toDir(frame.normal));
     }
   });
   // Batches of up to 16 planes (larger ones gained nothing on screw.step), at least four

@@ -12,12 +12,14 @@
 
 namespace sliceform {
 
-// How the section faces are made. Curves: BRepAlgoAPI_Section's curves chained into loops
-// and faces made from them on the plane (slicing/section_faces.hpp), each plane that route
-// is unsure of cut by the Common instead. Common: BRepAlgoAPI_Common of the solid with a
-// face on each plane, the faces as the Boolean splits them (several times slower: it
-// builds the split faces of the solid too).
-enum class SectionRoute { Curves, Common };
+// How the section faces are made. FaceByFace: our own plane/face intersections chained
+// into loops and faces made from them on the plane (slicing/face_by_face.hpp); a plane it
+// is unsure of goes on to Curves. Curves: BRepAlgoAPI_Section's curves, the same loops and
+// faces (slicing/section_faces.hpp); a plane it is unsure of goes on to Common. Common:
+// BRepAlgoAPI_Common of the solid with a face on each plane, the faces as the Boolean splits
+// them (several times slower: it builds the split faces of the solid too). A route asked
+// for is where a plane starts.
+enum class SectionRoute { FaceByFace, Curves, Common };
 
 struct ExactSlice {
   double position = 0;
@@ -43,7 +45,7 @@ enum class SliceDetail { Measured, FacesOnly };
 std::vector<ExactSlice> sliceBrep(const TopoDS_Shape& solid, const SliceFrame& frame,
                                   const std::vector<double>& positions, double deflection,
                                   SliceDetail detail = SliceDetail::Measured,
-                                  SectionRoute route = SectionRoute::Curves);
+                                  SectionRoute route = SectionRoute::FaceByFace);
 
 // The outer and hole loops of planar faces, polygonised, in the frame's 2D coordinates.
 Region2d polygoniseFaces(const TopoDS_Shape& faces, const SliceFrame& frame, double deflection);

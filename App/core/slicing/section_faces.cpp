@@ -141,70 +141,81 @@ bool facesOf(std::vector<Loop>& loops, const gp_Pln& plane, BRep_Builder& builde
 
 }  // namespace
 
-std::vector<std::optional<TopoDS_Shape>> sectionFaces(const std::vector<TopoDS_Shape>& solids,
+std::vector<std::optional<SectionFaces>> sectionFaces(const TopoDS_Shape& solid, const FaceByFace* own,
                                                       const SliceFrame& frame,
                                                       const std::vector<double>& positions,
                                                       const gp_Pnt& centre, double halfSize,
                                                       double deflection) {
   const size_t n = positions.size();
   BRep_Builder builder;
-  TopoDS_Compound cutters;
-  builder.MakeCompound(cutters);
   const double centrePosition = frame.position({centre.X(), centre.Y(), centre.Z()});
   std::vector<gp_Pln> planes;
   for (const double position : positions) {
     const gp_Pnt origin = centre.Translated(gp_Vec(toDir(frame.normal)) * (position - centrePosition));
     planes.emplace_back(gp_Ax3(origin, toDir(frame.normal), toDir(frame.xAxis)));
-    builder.Add(cutters,
-                BRepBuilderAPI_MakeFace(planes.back(), -halfSize, halfSize, -halfSize, halfSize).Face());
   }
-  std::vector<TopoDS_Compound> faces(n);
-  std::vector<bool> any(n, false), failed(n, false);
-  for (TopoDS_Compound& f : faces) builder.MakeCompound(f);
-  for (const TopoDS_Shape& solid : solids) {
-    BRepAlgoAPI_Section section;
-    TopTools_ListOfShape arguments, tools;
-    arguments.Append(solid);
-    tools.Append(cutters);
-    section.SetArguments(arguments);
-    section.SetTools(tools);
-    // Curves only: the faces are made from them below, on the plane. Measured on 128
-    // planes of occ/Pump_TopCover.brep (B-spline faces), one core: the walking lines
-    // approximated with their curves on the solid's faces 8.3 s, in 3D alone 40 s, not
-    // approximated 36 s (and polylines of ~1000 points that made the slot Booleans 60x
-    // slower on screw.step). On the cutter planes no curves are needed.
-    section.Approximation(Standard_True);
-    section.ComputePCurveOn1(Standard_True);
-    section.ComputePCurveOn2(Standard_False);
-    section.SetNonDestructive(Standard_True);  // the solid is shared by other threads
-    section.SetRunParallel(Standard_False);
-    section.Build();
-    if (!section.IsDone() || section.HasErrors()) return std::vector<std::optional<TopoDS_Shape>>(n);
-    // Each edge to its plane, by one of its vertices.
-    std::vector<Handle(TopTools_HSequenceOfShape)> edges(n);
-    for (auto& e : edges) e = new TopTools_HSequenceOfShape;
-    for (TopExp_Explorer it(section.Shape(), TopAbs_EDGE); it.More(); it.Next()) {
-      const TopExp_Explorer vertex(it.Current(), TopAbs_VERTEX);
-      if (!vertex.More()) return std::vector<std::optional<TopoDS_Shape>>(n);
-      const gp_Pnt at = BRep_Tool::Pnt(TopoDS::Vertex(vertex.Current()));
-      const double p = frame.position({at.X(), at.Y(), at.Z()});
-      size_t nearest = 0;
-      for (size_t k = 1; k < n; ++k)
-        if (std::abs(positions[k] - p) < std::abs(positions[nearest] - p)) nearest = k;
-      edges[nearest]->Append(it.Current());
+  std::vector<std::optional<SectionFaces>> out(n);
+  // Our own intersections first, plane by plane; OCCT's section for the planes left.
+  std::vector<size_t> rest;
+  for (size_t k = 0; k < n; ++k) {
+    const Handle(TopTools_HSequenceOfShape) edges = own ? own->edges(planes[k]) : nullptr;
+    if (!edges.IsNull() && edges->IsEmpty()) {
+      out[k] = SectionFaces{TopoDS_Shape(), SectionRoute::FaceByFace};
+      continue;
     }
-    for (size_t k = 0; k < n; ++k) {
-      if (failed[k] || edges[k]->IsEmpty()) continue;
-      std::vector<Loop> loops;
-      if (!loopsOf(edges[k], frame, deflection, loops) || !facesOf(loops, planes[k], builder, faces[k]))
-        failed[k] = true;
-      else
-        any[k] = any[k] || !loops.empty();
-    }
+    std::vector<Loop> loops;
+    TopoDS_Compound faces;
+    builder.MakeCompound(faces);
+    if (!edges.IsNull() && loopsOf(edges, frame, deflection, loops) && facesOf(loops, planes[k], builder, faces))
+      out[k] = SectionFaces{faces, SectionRoute::FaceByFace};
+    else
+      rest.push_back(k);
   }
-  std::vector<std::optional<TopoDS_Shape>> out(n);
-  for (size_t k = 0; k < n; ++k)
-    if (!failed[k]) out[k] = any[k] ? TopoDS_Shape(faces[k]) : TopoDS_Shape();
+  if (rest.empty()) return out;
+  TopoDS_Compound cutters;
+  builder.MakeCompound(cutters);
+  for (const size_t k : rest)
+    builder.Add(cutters, BRepBuilderAPI_MakeFace(planes[k], -halfSize, halfSize, -halfSize, halfSize).Face());
+  BRepAlgoAPI_Section section;
+  TopTools_ListOfShape arguments, tools;
+  arguments.Append(solid);
+  tools.Append(cutters);
+  section.SetArguments(arguments);
+  section.SetTools(tools);
+  // Curves only: the faces are made from them below, on the plane. Measured on 128
+  // planes of occ/Pump_TopCover.brep (B-spline faces), one core: the walking lines
+  // approximated with their curves on the solid's faces 8.3 s, in 3D alone 40 s, not
+  // approximated 36 s (and polylines of ~1000 points that made the slot Booleans 60x
+  // slower on screw.step). On the cutter planes no curves are needed.
+  section.Approximation(Standard_True);
+  section.ComputePCurveOn1(Standard_True);
+  section.ComputePCurveOn2(Standard_False);
+  section.SetNonDestructive(Standard_True);  // the solid is shared by other threads
+  section.SetRunParallel(Standard_False);
+  section.Build();
+  if (!section.IsDone() || section.HasErrors()) return out;
+  // Each edge to its plane, by one of its vertices.
+  std::vector<Handle(TopTools_HSequenceOfShape)> edges(rest.size());
+  for (auto& e : edges) e = new TopTools_HSequenceOfShape;
+  for (TopExp_Explorer it(section.Shape(), TopAbs_EDGE); it.More(); it.Next()) {
+    const TopExp_Explorer vertex(it.Current(), TopAbs_VERTEX);
+    if (!vertex.More()) return out;
+    const gp_Pnt at = BRep_Tool::Pnt(TopoDS::Vertex(vertex.Current()));
+    const double p = frame.position({at.X(), at.Y(), at.Z()});
+    size_t nearest = 0;
+    for (size_t i = 1; i < rest.size(); ++i)
+      if (std::abs(positions[rest[i]] - p) < std::abs(positions[rest[nearest]] - p)) nearest = i;
+    edges[nearest]->Append(it.Current());
+  }
+  for (size_t i = 0; i < rest.size(); ++i) {
+    std::vector<Loop> loops;
+    TopoDS_Compound faces;
+    builder.MakeCompound(faces);
+    if (edges[i]->IsEmpty())
+      out[rest[i]] = SectionFaces{TopoDS_Shape(), SectionRoute::Curves};
+    else if (loopsOf(edges[i], frame, deflection, loops) && facesOf(loops, planes[rest[i]], builder, faces))
+      out[rest[i]] = SectionFaces{faces, SectionRoute::Curves};
+  }
   return out;
 }
 

@@ -1,0 +1,56 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// Plane sections of a solid made face by face, without OCCT's Boolean machinery (its set-up
+// of interferences, pave blocks and curve checks was most of a plane's cost on parts of
+// planes and cylinders). Each face the plane reaches is intersected with it analytically
+// (IntAna_QuadQuadGeo: planes, cylinders, cones, spheres, and tori cut across or through
+// their axis); each curve is cut where the plane crosses the face's edges, and the pieces
+// inside the face are kept. Pieces of two faces meet at the one vertex made for each
+// crossing of their shared edge, so the edges chain into loops by shared vertices.
+//
+// The route answers nothing where it would have to guess or cannot solve, and the caller
+// then asks BRepAlgoAPI_Section: a face of another kind (B-spline, a torus cut off its
+// axes), a face on the plane, the plane through a vertex of the solid or tangent to a face,
+// a crossing on none of a face's curves, a piece on a face's boundary.
+#pragma once
+
+#include <Bnd_Box.hxx>
+#include <TopTools_HSequenceOfShape.hxx>
+#include <TopoDS_Edge.hxx>
+#include <TopoDS_Face.hxx>
+#include <TopoDS_Shape.hxx>
+#include <gp_Dir.hxx>
+#include <gp_Pln.hxx>
+
+#include <vector>
+
+namespace sliceform {
+
+class FaceByFace {
+ public:
+  // `solid`'s faces and edges, with where each lies along `normal`, the normal of every
+  // plane asked for later. Only reads the solid; `edges` may run on several threads at once.
+  FaceByFace(const TopoDS_Shape& solid, const gp_Dir& normal);
+
+  // The section edges of `plane` (its normal the one given): empty where the plane misses
+  // the solid, a null handle where this route is unsure.
+  Handle(TopTools_HSequenceOfShape) edges(const gp_Pln& plane) const;
+
+ private:
+  struct Edge {
+    TopoDS_Edge edge;
+    double lo, hi;  // along the normal, from its bounding box
+    double tolerance;
+  };
+  struct Face {
+    TopoDS_Face face;
+    Bnd_Box box;
+    double lo, hi;
+    double uv[4];            // its parameter box: u min, u max, v min, v max
+    std::vector<int> edges;  // indices into edges_, each once (a seam too)
+  };
+  gp_Dir normal_;
+  std::vector<Edge> edges_;
+  std::vector<Face> faces_;
+};
+
+}  // namespace sliceform
