@@ -168,6 +168,10 @@ Slot vSlot(SlotPair pair) {
   return Slot::None;
 }
 
+Slot familySlot(Family f, SlotPair pair) {
+  return f == Family::U ? uSlot(pair) : vSlot(pair);
+}
+
 VerticalLines::VerticalLines(const Region2d& shape, const std::vector<double>& xs) : shape_(&shape) {
   for (const double x : xs)
     if (!lines_.count(x)) lines_.emplace(x, shape.intervalsOnLine({x, 0}, {0, 1}));
