@@ -40,15 +40,14 @@ Region2d rect(double x0, double y0, double x1, double y1) {
 // with every hinge segment found on the common lines (all of them holding).
 RealizationInput handMade(const std::vector<PatchShape>& patches) {
   RealizationInput in;
-  in.uFrame = makeSliceFrame({1, 0, 0}, {0, 0, 1});
-  in.vFrame = makeSliceFrame({0, 1, 0}, {0, 0, 1});
+  in.frames = {makeSliceFrame({1, 0, 0}, {0, 0, 1}), makeSliceFrame({0, 1, 0}, {0, 0, 1})};
   in.patches = patches;
   for (int a = 0; a < static_cast<int>(patches.size()); ++a) {
     if (patches[a].family != Family::U) continue;
     for (int b = 0; b < static_cast<int>(patches.size()); ++b) {
       if (patches[b].family != Family::V) continue;
-      const double xa = lineX(in.uFrame, in.vFrame, patches[b].position);
-      const double xb = lineX(in.vFrame, in.uFrame, patches[a].position);
+      const double xa = lineX(in.frames.u, in.frames.v, patches[b].position);
+      const double xb = lineX(in.frames.v, in.frames.u, patches[a].position);
       for (const Interval& w : intersectIntervals(patches[a].shape.intervalsOnLine({xa, 0}, {0, 1}),
                                                   patches[b].shape.intervalsOnLine({xb, 0}, {0, 1})))
         in.hinges.push_back({a, b, w, true, w});
@@ -104,7 +103,7 @@ void expectStatesMatchSlots(const RealizationInput& in, const Realization& r) {
     double covered = 0;
     for (const int p : {hinge.u, hinge.v}) {
       const bool isU = p == hinge.u;
-      const double x = lineX(isU ? in.uFrame : in.vFrame, isU ? in.vFrame : in.uFrame,
+      const double x = lineX(isU ? in.frames.u : in.frames.v, isU ? in.frames.v : in.frames.u,
                              in.patches[isU ? hinge.v : hinge.u].position);
       for (const Interval& i : intersectIntervals(r.slotted[p].intervalsOnLine({x, 0}, {0, 1}), {hinge.w}))
         covered += i.hi - i.lo;
@@ -138,7 +137,7 @@ TEST(Interlock, LinkedRingsNeedACutThrough) {
                                         {Family::V, 10, rect(-5, -40, 5, 40)}});
   ASSERT_EQ(in.hinges.size(), 2u) << "A meets C twice on the line x = 10, B not at all";
   const HoleLoops a = holeLoops(in.patches[0].shape, 0), b = holeLoops(in.patches[1].shape, 0);
-  EXPECT_EQ(interlockCount(a, in.uFrame, b, in.vFrame), 1);
+  EXPECT_EQ(interlockCount(a, in.frames.u, b, in.frames.v), 1);
   const Realization r = realize(in, SlotParams{});
   EXPECT_EQ(r.interlocks.found, 1);
   EXPECT_EQ(r.interlocks.remaining, 0);
@@ -160,7 +159,7 @@ TEST(Slots, WidthIsThicknessPlusClearance) {
   params.clearance = 0.15;
   const Realization r = realize(in, params);
   ASSERT_EQ(r.slots[0], SlotPair::UpDown);
-  const double xu = lineX(in.uFrame, in.vFrame, 5), xv = lineX(in.vFrame, in.uFrame, 0);
+  const double xu = lineX(in.frames.u, in.frames.v, 5), xv = lineX(in.frames.v, in.frames.u, 0);
   const auto gaps = [](const Region2d& region, double y) {
     const std::vector<Interval> row = region.intervalsOnLine({0, y}, {1, 0});
     std::vector<Interval> out;
@@ -194,7 +193,7 @@ TEST(Slots, RoundEndsStayWithinTheSlot) {
   SlotParams square, round;
   round.end = SlotEnd::Round;
   const Realization a = realize(in, square), b = realize(in, round);
-  const double xu = lineX(in.uFrame, in.vFrame, 5);
+  const double xu = lineX(in.frames.u, in.frames.v, 5);
   // The rounded slot reaches the root on its centre line, and leaves the corners.
   EXPECT_NEAR(b.slotted[0].intervalsOnLine({xu, 0}, {0, 1})[0].hi, 20 + kRootGap, 1e-3);
   EXPECT_GT(b.slotted[0].area(), a.slotted[0].area());

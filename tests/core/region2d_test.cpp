@@ -241,5 +241,37 @@ TEST(Region2d, CoordinatesOutOfRangeAreRejected) {
   EXPECT_TRUE(Region2d::fromLoops({{{0, 0}, {1, 1}}}).empty());
 }
 
+// What the label placers and the slot cutter ask of the region (they use no Clipper).
+TEST(Region2d, PointSegmentAndBoxQueries) {
+  const Region2d r = Region2d::fromLoops({rect(0, 0, 10, 10), rect(3, 3, 7, 7)});
+  EXPECT_TRUE(r.contains({1, 1}));
+  EXPECT_TRUE(r.contains({0, 5}));  // on the boundary
+  EXPECT_FALSE(r.contains({5, 5}));
+  EXPECT_FALSE(r.contains({11, 1}));
+  EXPECT_TRUE(r.containsSegment({1, 1}, {1, 9}, 1e-3));
+  EXPECT_FALSE(r.containsSegment({1, 5}, {9, 5}, 1e-3));
+  // A 2 x 2 box fits with its centre in [1, 9]² outside (2, 8)²; one box rules out [1, 2]².
+  const Box2 window{{-5, -5}, {15, 15}, false};
+  EXPECT_NEAR(r.boxCentres({1, 1}, window, {}).area(), 28.0, 1e-6);
+  EXPECT_NEAR(r.boxCentres({1, 1}, window, {{{0, 0}, {2, 2}, false}}).area(), 27.0, 1e-6);
+  // Coarse round corners are chords inside the true arcs: the hole grows a little less.
+  const double coarse = r.coarseOffset(-1, 0.02).area(), fine = r.offset(-1).area();
+  EXPECT_NEAR(fine, 64.0 - (16.0 + 16.0 + M_PI), 0.01);
+  EXPECT_GT(coarse, fine);
+  EXPECT_LT(coarse, fine + 0.1);
+  EXPECT_EQ(r.simplified(0.02).area(), r.area());
+}
+
+TEST(Region2d, RawComponentsAndUnionAtOnce) {
+  const Region2d two = Region2d::uniteAtOnce(
+      {Region2d::fromLoops({rect(0, 0, 4, 2)}), Region2d::fromLoops({rect(3, 0, 8, 2)})});
+  EXPECT_NEAR(two.area(), 16.0, kTiny);
+  const Region2d strip = Region2d::fromLoops({rect(4, -1, 5, 3)});
+  const std::vector<Region2d> raw = two.subtractComponentsRaw(strip), clean = two.subtractComponents(strip);
+  ASSERT_EQ(raw.size(), 2u);
+  ASSERT_EQ(clean.size(), 2u);
+  for (size_t i = 0; i < 2; ++i) EXPECT_NEAR(raw[i].area(), clean[i].area(), kTiny);
+}
+
 }  // namespace
 }  // namespace sliceform

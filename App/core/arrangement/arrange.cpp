@@ -106,7 +106,7 @@ void remeasure(Arrangement& a) {
 
 PatchPlane patchPlane(const Arrangement& a, int patch) {
   const ScaffoldPatch& p = a.scaffold.patches[patch];
-  const SliceFrame& f = p.family == Family::U ? a.u.frame : a.v.frame;
+  const SliceFrame& f = a.slices(p.family).frame;
   return {f.normal * p.position, f.normal, f.xAxis, f.yAxis};
 }
 

@@ -40,6 +40,10 @@ struct Arrangement {
   Certificate certificate;
   Quality quality;
   std::vector<StageTime> timings;
+
+  // Family f's slice set and cylinders.
+  const SliceSet& slices(Family f) const { return f == Family::U ? u : v; }
+  const std::vector<Cylinder>& cylinders(Family f) const { return f == Family::U ? uCylinders : vCylinders; }
 };
 
 // Throws BadParameter for directions that are not orthogonal or out-of-range values.

@@ -23,6 +23,8 @@ struct ScaffoldHinge {
   Interval w;          // the segment along W, mm
   bool holds = false;  // long enough, with enough paper beside its slot, to carry load
   Interval grip;       // where it holds (inside both eroded sections); slots start at its middle
+
+  int patch(Family f) const { return f == Family::U ? u : v; }  // its patch of family f
 };
 
 enum class Scheme { DominantU, DominantV, Both };
@@ -31,6 +33,8 @@ struct Scaffold {
   std::vector<ScaffoldPatch> patches;
   std::vector<ScaffoldHinge> hinges;
   std::vector<int> uncoveredU, uncoveredV;  // cylinders that must have a patch but could not
+
+  std::vector<int>& uncovered(Family f) { return f == Family::U ? uncoveredU : uncoveredV; }
 };
 
 std::string patchId(const Scaffold& scaffold, int patch);  // "U3", "V7": family and number

@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "support/error.hpp"
+#include "support/per_family.hpp"
 
 namespace sliceform {
 namespace {
@@ -27,17 +28,15 @@ class Builder {
  public:
   Builder(const SliceSet& u, const SliceSet& v, const std::vector<Cylinder>& cu,
           const std::vector<Cylinder>& cv, const HingeTable& table, double minSpacing)
-      : u_(u),
-        v_(v),
-        cu_(cu),
-        cv_(cv),
+      : sets_{u, v},
+        cylinders_{cu, cv},
         table_(table),
         minSpacing_(minSpacing),
         pitch_{slicesApart(minSpacing, u.interval), slicesApart(minSpacing, v.interval)} {}
 
   Scaffold scaffold;
 
-  const std::vector<Cylinder>& cylinders(Family f) const { return f == Family::U ? cu_ : cv_; }
+  const std::vector<Cylinder>& cylinders(Family f) const { return cylinders_[f]; }
   double volume(Family f, int c) const {
     const Cylinder& cyl = cylinders(f)[c];
     return cyl.section.area() * (cyl.lastSlice - cyl.firstSlice + 1);
@@ -53,7 +52,7 @@ class Builder {
     std::vector<int> out;
     for (int k = cyl.firstSlice; k <= cyl.lastSlice; ++k) out.push_back(k);
     const double middle = 0.5 * (cyl.firstSlice + cyl.lastSlice);
-    const int pitch = pitch_[f == Family::U ? 0 : 1];
+    const int pitch = pitch_[f];
     std::stable_sort(out.begin(), out.end(), [&](int a, int b) {
       const bool ga = a % pitch == 0, gb = b % pitch == 0;
       if (ga != gb) return ga;
@@ -86,7 +85,7 @@ class Builder {
                        [&](const ScaffoldPatch& p) { return p.family == f && p.cylinder == c; });
   }
 
-  double pos(const Candidate& c) const { return (c.family == Family::U ? u_ : v_).slices[c.slice].position; }
+  double pos(const Candidate& c) const { return sets_[c.family].slices[c.slice].position; }
 
   // The spacing rule: no placed patch of c's family closer than minSpacing whose outline,
   // seen along the normal, overlaps c's. Patches of one slice lie side by side, not stacked.
@@ -102,7 +101,7 @@ class Builder {
   bool allowed(const Candidate& c) const { return !placed(c) && spaced(c); }
 
   void place(const Candidate& c) {
-    const SliceSet& set = c.family == Family::U ? u_ : v_;
+    const SliceSet& set = sets_[c.family];
     scaffold.patches.push_back({c.family, c.cylinder, c.slice, set.slices[c.slice].position});
   }
 
@@ -132,8 +131,8 @@ class Builder {
     // Among all grids, the one whose patches are farthest apart (as a share of the model's
     // extent, up to a quarter of it): close patches make a flimsy grid, and patches a
     // slice apart are no use on paper. Ties go to the earlier, bigger and more central ones.
-    const double extentU = u_.slices.back().position - u_.slices.front().position;
-    const double extentV = v_.slices.back().position - v_.slices.front().position;
+    const double extentU = sets_.u.slices.back().position - sets_.u.slices.front().position;
+    const double extentV = sets_.v.slices.back().position - sets_.v.slices.front().position;
     double bestScore = -1;
     Candidate best[4];
     for (size_t q1 = 0; q1 < vs.size(); ++q1) {
@@ -218,7 +217,7 @@ class Builder {
   // Fig. 16b: extra patches in long cylinders, each held by two patches of the other family.
   void densify(double maxSpacing) {
     for (Family f : {Family::U, Family::V}) {
-      const SliceSet& set = f == Family::U ? u_ : v_;
+      const SliceSet& set = sets_[f];
       for (int c = 0; c < static_cast<int>(cylinders(f).size()); ++c) {
         if (!covered(f, c)) continue;
         while (true) {
@@ -243,13 +242,11 @@ class Builder {
   }
 
  private:
-  const SliceSet& u_;
-  const SliceSet& v_;
-  const std::vector<Cylinder>& cu_;
-  const std::vector<Cylinder>& cv_;
+  PerFamily<const SliceSet&> sets_;
+  PerFamily<const std::vector<Cylinder>&> cylinders_;
   const HingeTable& table_;
   double minSpacing_;
-  int pitch_[2];  // per family (U, V): slices that far apart are the rule apart
+  PerFamily<int> pitch_;  // slices that far apart are the rule apart
   // Whether two cylinders' outlines (holes filled) overlap seen along their family's
   // normal, by pair; filled because a patch seen through another's hole still has its
   // slots beside the other's on every partner that crosses both.
@@ -317,7 +314,7 @@ void dropPatch(Scaffold& s, const HingeTable& table, int k) {
   const bool covered = std::any_of(s.patches.begin(), s.patches.end(), [&](const ScaffoldPatch& p) {
     return p.family == gone.family && p.cylinder == gone.cylinder;
   });
-  if (!covered) (gone.family == Family::U ? s.uncoveredU : s.uncoveredV).push_back(gone.cylinder);
+  if (!covered) s.uncovered(gone.family).push_back(gone.cylinder);
   findHinges(s, table);
 }
 
@@ -373,7 +370,7 @@ Scaffold stabilize(const SliceSet& u, const SliceSet& v, const std::vector<Cylin
     if (options.maxSpacing > 0) b.densify(options.maxSpacing);
   }
   for (const auto& [f, c] : required)
-    if (!b.covered(f, c)) (f == Family::U ? b.scaffold.uncoveredU : b.scaffold.uncoveredV).push_back(c);
+    if (!b.covered(f, c)) b.scaffold.uncovered(f).push_back(c);
   Scaffold s = std::move(b.scaffold);
   findHinges(s, table);
   return s;

@@ -9,7 +9,10 @@
 namespace sliceform {
 namespace {
 
+using ClipperLib::cInt;
 using ClipperLib::Clipper;
+using ClipperLib::IntPoint;
+using ClipperLib::Path;
 using ClipperLib::Paths;
 
 ClipperLib::PolyFillType toClipper(FillRule rule) {
@@ -23,6 +26,113 @@ Paths boolean(const Paths& a, const Paths& b, ClipperLib::ClipType op) {
   Paths out;
   clipper.Execute(op, out, ClipperLib::pftNonZero, ClipperLib::pftNonZero);
   return out;
+}
+
+void differenceTree(const Paths& a, const Paths& b, ClipperLib::PolyTree& tree) {
+  Clipper clipper;
+  clipper.AddPaths(a, ClipperLib::ptSubject, true);
+  clipper.AddPaths(b, ClipperLib::ptClip, true);
+  clipper.Execute(ClipperLib::ctDifference, tree, ClipperLib::pftNonZero, ClipperLib::pftNonZero);
+}
+
+// Calls fn(paths) for each component of a Clipper result tree: an outer contour with its
+// direct holes (paths.front() the outer). Islands inside holes are outers again and make
+// components of their own.
+template <class Fn>
+void forEachComponent(const ClipperLib::PolyNode& node, Fn&& fn) {
+  for (const ClipperLib::PolyNode* child : node.Childs) {
+    if (child->IsHole()) {
+      forEachComponent(*child, fn);
+      continue;
+    }
+    ClipperLib::Paths paths{child->Contour};
+    for (const ClipperLib::PolyNode* hole : child->Childs) paths.push_back(hole->Contour);
+    fn(paths);
+    for (const ClipperLib::PolyNode* hole : child->Childs) forEachComponent(*hole, fn);
+  }
+}
+
+// Point in region by the depth of loops around it (a point on a loop counts as inside it).
+bool inside(const Paths& paths, IntPoint q) {
+  int depth = 0;
+  for (const Path& loop : paths) {
+    const int in = ClipperLib::PointInPolygon(q, loop);
+    if (in != 0) depth += ClipperLib::Orientation(loop) ? 1 : -1;
+  }
+  return depth > 0;
+}
+
+// Integer box [lo, hi] in Clipper units.
+struct UnitBox {
+  IntPoint lo, hi;
+  bool meets(const UnitBox& o) const {
+    return lo.X <= o.hi.X && o.lo.X <= hi.X && lo.Y <= o.hi.Y && o.lo.Y <= hi.Y;
+  }
+};
+
+UnitBox unitBox(const Box2& b) {
+  return {{Region2d::toUnits(b.min.x), Region2d::toUnits(b.min.y)},
+          {Region2d::toUnits(b.max.x), Region2d::toUnits(b.max.y)}};
+}
+
+Path boxPath(const UnitBox& b) {
+  return {{b.lo.X, b.lo.Y}, {b.hi.X, b.lo.Y}, {b.hi.X, b.hi.Y}, {b.lo.X, b.hi.Y}};
+}
+
+// What an axis-aligned box of half size (w, h) covers as its centre runs along a chain of
+// edges that all head into one quadrant (sx, sy = ±1: none goes left when sx > 0, none
+// down when sy > 0): the band between the chain traced by the box's two corners across the
+// heading, (sx w, -sy h) and (-sx w, sy h), closed by the box at either end. Above and
+// below any x the box reaches, the chain's highest and lowest points lie at the far ends
+// of its reach, so those two traces are exactly the band's top and bottom. One polygon
+// per run instead of a convex piece per edge: the overlaps Clipper has to resolve are
+// those between runs, not those of every edge with its dozens of short neighbours.
+void addRun(const Path& run, int sx, int sy, cInt w, cInt h, Paths& out) {
+  const cInt cx = sx * w, cy = sy * h;
+  Path band;
+  band.reserve(2 * run.size() + 2);
+  band.push_back({run.front().X - cx, run.front().Y - cy});
+  for (const IntPoint& a : run) band.push_back({a.X + cx, a.Y - cy});
+  band.push_back({run.back().X + cx, run.back().Y + cy});
+  for (size_t i = run.size(); i-- > 0;) band.push_back({run[i].X - cx, run[i].Y + cy});
+  // Counter-clockwise when heading up-right or down-left; a mirror image otherwise.
+  if (sx * sy < 0) std::reverse(band.begin(), band.end());
+  out.push_back(std::move(band));
+}
+
+// The bands the boundary `paths` sweeps with a box of half size (w, h), for the edges
+// whose band can reach `near`. A box centred at p
+// lies in the region exactly when p is in the region and outside every band: a box the
+// boundary does not cross holds either none or all of a loop, and then it holds the
+// loop's vertices, which the bands of that loop's edges cover.
+Paths sweptBands(const Paths& paths, cInt w, cInt h, const UnitBox& near) {
+  Paths bands;
+  Path run;
+  int sx = 0, sy = 0;  // the run's heading; 0 while its edges left it open
+  const auto flush = [&] {
+    if (run.size() >= 2) addRun(run, sx < 0 ? -1 : 1, sy < 0 ? -1 : 1, w, h, bands);
+    run.clear();
+    sx = sy = 0;
+  };
+  for (const Path& loop : paths) {
+    for (size_t i = 0, n = loop.size(); i < n; ++i) {
+      const IntPoint a = loop[i], b = loop[(i + 1) % n];
+      const UnitBox reach{{std::min(a.X, b.X) - w, std::min(a.Y, b.Y) - h},
+                          {std::max(a.X, b.X) + w, std::max(a.Y, b.Y) + h}};
+      if (!reach.meets(near)) {
+        flush();
+        continue;
+      }
+      const int dx = (b.X > a.X) - (b.X < a.X), dy = (b.Y > a.Y) - (b.Y < a.Y);
+      if ((dx && sx && dx != sx) || (dy && sy && dy != sy)) flush();
+      if (run.empty()) run.push_back(a);
+      run.push_back(b);
+      if (dx) sx = dx;
+      if (dy) sy = dy;
+    }
+    flush();
+  }
+  return bands;
 }
 
 }  // namespace
@@ -58,6 +168,12 @@ Region2d Region2d::fromPaths(const Paths& paths, FillRule rule) {
                                      [](const ClipperLib::Path& p) { return p.size() < 3; }),
                       region.paths_.end());
   return region;
+}
+
+Region2d Region2d::uniteAtOnce(const std::vector<Region2d>& regions) {
+  Paths all;
+  for (const Region2d& r : regions) all.insert(all.end(), r.paths_.begin(), r.paths_.end());
+  return fromPaths(all, FillRule::NonZero);
 }
 
 Region2d Region2d::withoutHoles() const {
@@ -139,14 +255,23 @@ std::vector<Region2d> Region2d::components() const {
 }
 
 std::vector<Region2d> Region2d::subtractComponents(const Region2d& other) const {
-  Clipper clipper;
-  clipper.AddPaths(paths_, ClipperLib::ptSubject, true);
-  clipper.AddPaths(other.paths_, ClipperLib::ptClip, true);
   ClipperLib::PolyTree tree;
-  clipper.Execute(ClipperLib::ctDifference, tree, ClipperLib::pftNonZero, ClipperLib::pftNonZero);
+  differenceTree(paths_, other.paths_, tree);
   std::vector<Region2d> out;
   forEachComponent(tree,
                    [&](const Paths& paths) { out.push_back(Region2d::fromPaths(paths, FillRule::NonZero)); });
+  return out;
+}
+
+std::vector<Region2d> Region2d::subtractComponentsRaw(const Region2d& other) const {
+  ClipperLib::PolyTree tree;
+  differenceTree(paths_, other.paths_, tree);
+  std::vector<Region2d> out;
+  forEachComponent(tree, [&](const Paths& paths) {
+    if (paths.front().size() < 3) return;
+    out.emplace_back();
+    out.back().paths_ = paths;
+  });
   return out;
 }
 
@@ -176,6 +301,67 @@ Region2d Region2d::offset(double deltaMm) const {
   Region2d r;
   offsetter.Execute(r.paths_, deltaMm * kUnitsPerMm);
   return r;
+}
+
+Region2d Region2d::coarseOffset(double deltaMm, double toleranceMm) const {
+  ClipperLib::ClipperOffset offsetter;
+  offsetter.ArcTolerance = toleranceMm * kUnitsPerMm;
+  offsetter.AddPaths(paths_, ClipperLib::jtRound, ClipperLib::etClosedPolygon);
+  Paths out;
+  offsetter.Execute(out, deltaMm * kUnitsPerMm);
+  return fromPaths(out, FillRule::NonZero);
+}
+
+Region2d Region2d::simplified(double toleranceMm) const {
+  Paths paths = paths_;
+  ClipperLib::CleanPolygons(paths, toleranceMm * kUnitsPerMm);
+  return fromPaths(paths, FillRule::NonZero);
+}
+
+bool Region2d::contains(Vec2 p) const {
+  return inside(paths_, IntPoint{toUnits(p.x), toUnits(p.y)});
+}
+
+bool Region2d::containsSegment(Vec2 a, Vec2 b, double slackMm) const {
+  // Clips the segment as an open path: what is left of it lies outside.
+  Clipper clipper;
+  clipper.AddPath({{toUnits(a.x), toUnits(a.y)}, {toUnits(b.x), toUnits(b.y)}}, ClipperLib::ptSubject, false);
+  clipper.AddPaths(paths_, ClipperLib::ptClip, true);
+  ClipperLib::PolyTree outside;
+  clipper.Execute(ClipperLib::ctDifference, outside, ClipperLib::pftNonZero, ClipperLib::pftNonZero);
+  Paths pieces;
+  ClipperLib::OpenPathsFromPolyTree(outside, pieces);
+  for (const Path& piece : pieces)
+    for (size_t i = 1; i < piece.size(); ++i)
+      if (std::hypot(toMm(piece[i].X - piece[i - 1].X), toMm(piece[i].Y - piece[i - 1].Y)) > slackMm)
+        return false;
+  return true;
+}
+
+// A window needs only the boundary near it: the window minus the bands of the nearby edges
+// and the boxes to avoid falls into pieces that each lie wholly inside or wholly outside
+// the region (no band crosses them, and a box that stays clear of the boundary cannot
+// change sides), so one vertex of each piece decides it.
+Region2d Region2d::boxCentres(Vec2 half, const Box2& window, const std::vector<Box2>& avoid) const {
+  const cInt w = toUnits(half.x), h = toUnits(half.y);
+  const UnitBox near = unitBox(window);
+  Paths clip = sweptBands(paths_, w, h, near);
+  for (const Box2& b : avoid) {
+    const UnitBox box = unitBox(b);
+    if (box.meets(near)) clip.push_back(boxPath(box));
+  }
+  Clipper clipper;
+  clipper.AddPaths(clip, ClipperLib::ptClip, true);
+  clipper.AddPath(boxPath(near), ClipperLib::ptSubject, true);
+  ClipperLib::PolyTree pieces;
+  clipper.Execute(ClipperLib::ctDifference, pieces, ClipperLib::pftNonZero, ClipperLib::pftNonZero);
+  Paths room;
+  for (const ClipperLib::PolyNode* node = pieces.GetFirst(); node; node = node->GetNext()) {
+    if (node->IsHole() || node->Contour.empty() || !inside(paths_, node->Contour.front())) continue;
+    room.push_back(node->Contour);
+    for (const ClipperLib::PolyNode* hole : node->Childs) room.push_back(hole->Contour);
+  }
+  return fromPaths(room, FillRule::NonZero);
 }
 
 std::vector<Interval> Region2d::intervalsOnLine(Vec2 point, Vec2 dir) const {

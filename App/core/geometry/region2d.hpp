@@ -6,6 +6,10 @@
 //
 // Invariant: the paths are normalised (no overlaps, no self-intersections), outer loops
 // counter-clockwise (positive area, y up), holes clockwise.
+//
+// This is the one place that uses Clipper for regions: whatever else needs its integer
+// polygons asks Region2d, so units, rounding and fill rules are decided here alone (the
+// nesting hands libnest2d hulls in libnest2d's own Clipper paths and units).
 #pragma once
 
 #include <polyclipping/clipper.hpp>
@@ -33,9 +37,12 @@ class Region2d {
   Region2d() = default;
   // Loops in mm with any orientation; `rule` decides what is inside.
   static Region2d fromLoops(const std::vector<Loop>& loops, FillRule rule = FillRule::EvenOdd);
-  static Region2d fromPaths(const ClipperLib::Paths& paths, FillRule rule);
   static Region2d uniteAll(const std::vector<Region2d>& regions);
+  // The union of all of them in one sweep over every loop: for a few regions that barely
+  // touch (uniteAll pairs them up, which pays for many similar ones).
+  static Region2d uniteAtOnce(const std::vector<Region2d>& regions);
 
+  // The integer polygons themselves, for tests that compare results bit for bit.
   const ClipperLib::Paths& paths() const { return paths_; }
   // Loops in mm: outer loops counter-clockwise, holes clockwise.
   std::vector<Loop> loops() const;
@@ -52,12 +59,31 @@ class Region2d {
   // subtract(other).components() in one sweep: the pieces come straight from the
   // difference's tree instead of a second union over its result.
   std::vector<Region2d> subtractComponents(const Region2d& other) const;
+  // The same pieces as the tree gives them, outer loop first, not normalised again (no
+  // second union, no cleaning): enough to count and measure them, at a fraction of the
+  // time. A piece whose outer loop has under three points is left out.
+  std::vector<Region2d> subtractComponentsRaw(const Region2d& other) const;
 
   Region2d unite(const Region2d& other) const;
   Region2d intersect(const Region2d& other) const;
   Region2d subtract(const Region2d& other) const;
   // Grows (delta > 0) or erodes (delta < 0) by |delta| mm, with round corners.
   Region2d offset(double deltaMm) const;
+  // offset with round corners cut as chords up to `toleranceMm` inside the true arcs (far
+  // fewer vertices than offset's 1 µm), then normalised as fromLoops normalises.
+  Region2d coarseOffset(double deltaMm, double toleranceMm) const;
+  // With vertices closer than `toleranceMm` merged: fewer, longer edges.
+  Region2d simplified(double toleranceMm) const;
+
+  // Whether p lies inside, to Clipper's units (a point on the boundary is inside).
+  bool contains(Vec2 p) const;
+  // Whether the segment a-b runs inside all along, to Clipper's units: no piece of it
+  // outside is longer than `slackMm` (rounding leaves specks at its ends).
+  bool containsSegment(Vec2 a, Vec2 b, double slackMm) const;
+  // Where the centre of an axis-aligned box of half size `half` (mm) may stand within
+  // `window` so that the whole box lies inside the region and the centre inside none of
+  // `avoid` (boxes of centres ruled out already), to Clipper's units.
+  Region2d boxCentres(Vec2 half, const Box2& window, const std::vector<Box2>& avoid) const;
 
   // Where the line point + t * dir (dir a unit vector) runs inside the region, as sorted
   // intervals of t in mm. For a slice frame whose y axis is W and the vertical line
@@ -70,24 +96,9 @@ class Region2d {
   static double toMm(ClipperLib::cInt units) { return static_cast<double>(units) / kUnitsPerMm; }
 
  private:
+  static Region2d fromPaths(const ClipperLib::Paths& paths, FillRule rule);
+
   ClipperLib::Paths paths_;
 };
-
-// Calls fn(paths) for each component of a Clipper result tree: an outer contour with its
-// direct holes (paths.front() the outer). Islands inside holes are outers again and make
-// components of their own.
-template <class Fn>
-void forEachComponent(const ClipperLib::PolyNode& node, Fn&& fn) {
-  for (const ClipperLib::PolyNode* child : node.Childs) {
-    if (child->IsHole()) {
-      forEachComponent(*child, fn);
-      continue;
-    }
-    ClipperLib::Paths paths{child->Contour};
-    for (const ClipperLib::PolyNode* hole : child->Childs) paths.push_back(hole->Contour);
-    fn(paths);
-    for (const ClipperLib::PolyNode* hole : child->Childs) forEachComponent(*hole, fn);
-  }
-}
 
 }  // namespace sliceform

@@ -17,6 +17,7 @@
 #include "pipeline/design.hpp"
 #include "support/occt_guard.hpp"
 #include "support/parallel.hpp"
+#include "support/per_family.hpp"
 
 namespace sliceform {
 namespace {
@@ -99,15 +100,15 @@ std::vector<CutLoop> cutLoops(const TopoDS_Shape& shape, const PlaneMap& to2d) {
 std::vector<LabelSpot> partnerSpots(const Design& d, int patch) {
   const Arrangement& a = d.arrangement;
   const Realization& r = d.realization;
-  const bool isU = a.scaffold.patches[patch].family == Family::U;
-  const SliceFrame& f = isU ? a.u.frame : a.v.frame;
-  const SliceFrame& g = isU ? a.v.frame : a.u.frame;
+  const Family family = a.scaffold.patches[patch].family;
+  const SliceFrame& f = a.slices(family).frame;
+  const SliceFrame& g = a.slices(other(family)).frame;
   std::vector<LabelSpot> spots;
   for (size_t h = 0; h < a.scaffold.hinges.size(); ++h) {
     const ScaffoldHinge& hinge = a.scaffold.hinges[h];
-    if ((isU ? hinge.u : hinge.v) != patch || !d.emitted.meets[h]) continue;
-    const int partner = isU ? hinge.v : hinge.u;
-    const Slot slot = isU ? uSlot(r.slots[h]) : vSlot(r.slots[h]);
+    if (hinge.patch(family) != patch || !d.emitted.meets[h]) continue;
+    const int partner = hinge.patch(other(family));
+    const Slot slot = familySlot(family, r.slots[h]);
     const Interval& at = hinge.holds ? hinge.grip : hinge.w;
     const double root = (at.lo + at.hi) / 2;
     // The slot's stretch of the hinge: above the root for an up slot, below for down; its

@@ -32,8 +32,6 @@ Region2d freeFor(const Region2d& inner, const std::vector<Label>& taken, Vec2 ha
 
 // The point of `region` nearest to `p` (p itself when inside).
 Vec2 nearestPoint(const Region2d& region, Vec2 p);
-// Whether `p` lies inside `region` (to Clipper's units).
-bool regionContains(const Region2d& region, Vec2 p);
 
 // The boxes of the leaders' segments of `labels`, for freeFor's keepOff: a label set later
 // keeps off them (a segment's box will do).

@@ -43,11 +43,6 @@ constexpr double kAdvance = 5.5;  // grid units per character
 constexpr double kCap = 6;
 constexpr double kEdgeMargin = 0.6;  // mm of paper between a label and any cut
 
-using ClipperLib::cInt;
-using ClipperLib::IntPoint;
-using ClipperLib::Path;
-using ClipperLib::Paths;
-
 // Labels need no micrometres: erosions here round their corners to 0.02 mm (Region2d's
 // own offset keeps 1 µm, which makes every round corner hundreds of vertices).
 constexpr double kLabelTolerance = 0.02;  // mm
@@ -55,107 +50,18 @@ constexpr double kLabelTolerance = 0.02;  // mm
 constexpr double kCoarseTolerance = 0.25;  // mm
 
 Region2d erode(const Region2d& region, double mm, double tolerance = kLabelTolerance) {
-  ClipperLib::ClipperOffset offsetter;
-  offsetter.ArcTolerance = tolerance * Region2d::kUnitsPerMm;
-  offsetter.AddPaths(region.paths(), ClipperLib::jtRound, ClipperLib::etClosedPolygon);
-  Paths out;
-  offsetter.Execute(out, -mm * Region2d::kUnitsPerMm);
-  return Region2d::fromPaths(out, FillRule::NonZero);
+  return region.coarseOffset(-mm, tolerance);
 }
 
 // The paper with vertices closer than the tolerance merged: fewer, longer edges to sweep.
 Region2d simplified(const Region2d& paper) {
-  Paths paths = paper.paths();
-  ClipperLib::CleanPolygons(paths, kLabelTolerance * Region2d::kUnitsPerMm);
-  return Region2d::fromPaths(paths, FillRule::NonZero);
-}
-
-// Integer box [lo, hi] in Clipper units.
-struct UnitBox {
-  IntPoint lo, hi;
-  bool meets(const UnitBox& o) const {
-    return lo.X <= o.hi.X && o.lo.X <= hi.X && lo.Y <= o.hi.Y && o.lo.Y <= hi.Y;
-  }
-};
-
-Path boxPath(const UnitBox& b) {
-  return {{b.lo.X, b.lo.Y}, {b.hi.X, b.lo.Y}, {b.hi.X, b.hi.Y}, {b.lo.X, b.hi.Y}};
-}
-
-// What an axis-aligned box of half size (w, h) covers as its centre runs along a chain of
-// edges that all head into one quadrant (sx, sy = ±1: none goes left when sx > 0, none
-// down when sy > 0): the band between the chain traced by the box's two corners across the
-// heading, (sx w, -sy h) and (-sx w, sy h), closed by the box at either end. Above and
-// below any x the box reaches, the chain's highest and lowest points lie at the far ends
-// of its reach, so those two traces are exactly the band's top and bottom. One polygon
-// per run instead of a convex piece per edge: the overlaps Clipper has to resolve are
-// those between runs, not those of every edge with its dozens of short neighbours.
-void addRun(const Path& run, int sx, int sy, cInt w, cInt h, Paths& out) {
-  const cInt cx = sx * w, cy = sy * h;
-  Path band;
-  band.reserve(2 * run.size() + 2);
-  band.push_back({run.front().X - cx, run.front().Y - cy});
-  for (const IntPoint& a : run) band.push_back({a.X + cx, a.Y - cy});
-  band.push_back({run.back().X + cx, run.back().Y + cy});
-  for (size_t i = run.size(); i-- > 0;) band.push_back({run[i].X - cx, run[i].Y + cy});
-  // Counter-clockwise when heading up-right or down-left; a mirror image otherwise.
-  if (sx * sy < 0) std::reverse(band.begin(), band.end());
-  out.push_back(std::move(band));
-}
-
-// The bands the boundary of `region` sweeps with a box of half size (w, h), for the edges
-// whose band can reach `near`. A box centred at p
-// lies in the region exactly when p is in the region and outside every band: a box the
-// boundary does not cross holds either none or all of a loop, and then it holds the
-// loop's vertices, which the bands of that loop's edges cover.
-Paths sweptBands(const Region2d& region, cInt w, cInt h, const UnitBox& near) {
-  Paths bands;
-  Path run;
-  int sx = 0, sy = 0;  // the run's heading; 0 while its edges left it open
-  const auto flush = [&] {
-    if (run.size() >= 2) addRun(run, sx < 0 ? -1 : 1, sy < 0 ? -1 : 1, w, h, bands);
-    run.clear();
-    sx = sy = 0;
-  };
-  for (const Path& loop : region.paths()) {
-    for (size_t i = 0, n = loop.size(); i < n; ++i) {
-      const IntPoint a = loop[i], b = loop[(i + 1) % n];
-      const UnitBox reach{{std::min(a.X, b.X) - w, std::min(a.Y, b.Y) - h},
-                          {std::max(a.X, b.X) + w, std::max(a.Y, b.Y) + h}};
-      if (!reach.meets(near)) {
-        flush();
-        continue;
-      }
-      const int dx = (b.X > a.X) - (b.X < a.X), dy = (b.Y > a.Y) - (b.Y < a.Y);
-      if ((dx && sx && dx != sx) || (dy && sy && dy != sy)) flush();
-      if (run.empty()) run.push_back(a);
-      run.push_back(b);
-      if (dx) sx = dx;
-      if (dy) sy = dy;
-    }
-    flush();
-  }
-  return bands;
-}
-
-bool contains(const Region2d& region, IntPoint q) {
-  int depth = 0;
-  for (const Path& loop : region.paths()) {
-    const int in = ClipperLib::PointInPolygon(q, loop);
-    if (in != 0) depth += ClipperLib::Orientation(loop) ? 1 : -1;
-  }
-  return depth > 0;
-}
-
-bool contains(const Region2d& region, Vec2 p) {
-  return contains(region, IntPoint{Region2d::toUnits(p.x), Region2d::toUnits(p.y)});
+  return paper.simplified(kLabelTolerance);
 }
 
 // The part of `region` inside the box grown by `grow` mm on every side.
 Region2d near(const Region2d& region, const Box2& box, double grow) {
-  const UnitBox b{{Region2d::toUnits(box.min.x - grow), Region2d::toUnits(box.min.y - grow)},
-                  {Region2d::toUnits(box.max.x + grow), Region2d::toUnits(box.max.y + grow)}};
-  return region.intersect(Region2d::fromPaths({boxPath(b)}, FillRule::NonZero));
+  const Vec2 lo{box.min.x - grow, box.min.y - grow}, hi{box.max.x + grow, box.max.y + grow};
+  return region.intersect(Region2d::fromLoops({{lo, {hi.x, lo.y}, hi, {lo.x, hi.y}}}, FillRule::NonZero));
 }
 
 // The deepest point of a region, found by eroding it until little is left.
@@ -187,18 +93,14 @@ Vec2 deepestPoint(const Region2d& region) {
       pieces.begin(), pieces.end(), [](const Region2d& a, const Region2d& c) { return a.area() < c.area(); });
   const Box2 bb = best.bounds();
   const Vec2 centre{(bb.min.x + bb.max.x) / 2, (bb.min.y + bb.max.y) / 2};
-  if (contains(best, centre) || best.loops().empty() || best.loops().front().empty()) return centre;
+  if (best.contains(centre) || best.loops().empty() || best.loops().front().empty()) return centre;
   return best.loops().front().front();
 }
 
 }  // namespace
 
-bool regionContains(const Region2d& region, Vec2 p) {
-  return contains(region, p);
-}
-
 Vec2 nearestPoint(const Region2d& region, Vec2 p) {
-  if (contains(region, p)) return p;
+  if (region.contains(p)) return p;
   Vec2 best = p;
   double bestD = HUGE_VAL;
   for (const Region2d::Loop& loop : region.loops())
@@ -218,44 +120,21 @@ Vec2 halfSize(const std::string& text, double height, bool vertical) {
   return vertical ? Vec2{h, w} : Vec2{w, h};
 }
 
-// A window needs only the boundary near it: the window minus the bands of the nearby edges
-// and the labels' boxes falls into pieces that each lie wholly inside or wholly outside
-// `inner` (no band crosses them, and a box that stays clear of the boundary cannot change
-// sides), so one vertex of each piece decides it.
 Region2d freeFor(const Region2d& inner, const std::vector<Label>& taken, Vec2 half, const Box2& window,
                  const std::vector<Box2>& keepOff) {
   if (inner.empty()) return {};
-  const cInt w = Region2d::toUnits(half.x), h = Region2d::toUnits(half.y);
-  const UnitBox near{{Region2d::toUnits(window.min.x), Region2d::toUnits(window.min.y)},
-                     {Region2d::toUnits(window.max.x), Region2d::toUnits(window.max.y)}};
-  Paths clip = sweptBands(inner, w, h, near);
-  // Labels already set keep their distance: their boxes, grown by this one and the gap,
-  // join the bands (only those that reach the window).
+  // Labels already set keep their distance: no centre in their boxes grown by this one
+  // and the gap. Nor in the boxes of `keepOff` grown by this one, with no gap.
+  std::vector<Box2> avoid;
+  avoid.reserve(taken.size() + keepOff.size());
   for (const Label& l : taken) {
     const Vec2 other = halfSize(l.text, l.height, l.vertical);
     const double hx = other.x + half.x + kGap, hy = other.y + half.y + kGap;
-    const UnitBox box{{Region2d::toUnits(l.at.x - hx), Region2d::toUnits(l.at.y - hy)},
-                      {Region2d::toUnits(l.at.x + hx), Region2d::toUnits(l.at.y + hy)}};
-    if (box.meets(near)) clip.push_back(boxPath(box));
+    avoid.push_back({{l.at.x - hx, l.at.y - hy}, {l.at.x + hx, l.at.y + hy}, false});
   }
-  // So do the boxes in `keepOff`, with no gap.
-  for (const Box2& b : keepOff) {
-    const UnitBox box{{Region2d::toUnits(b.min.x - half.x), Region2d::toUnits(b.min.y - half.y)},
-                      {Region2d::toUnits(b.max.x + half.x), Region2d::toUnits(b.max.y + half.y)}};
-    if (box.meets(near)) clip.push_back(boxPath(box));
-  }
-  ClipperLib::Clipper clipper;
-  clipper.AddPaths(clip, ClipperLib::ptClip, true);
-  clipper.AddPath(boxPath(near), ClipperLib::ptSubject, true);
-  ClipperLib::PolyTree pieces;
-  clipper.Execute(ClipperLib::ctDifference, pieces, ClipperLib::pftNonZero, ClipperLib::pftNonZero);
-  Paths room;
-  for (const ClipperLib::PolyNode* node = pieces.GetFirst(); node; node = node->GetNext()) {
-    if (node->IsHole() || node->Contour.empty() || !contains(inner, node->Contour.front())) continue;
-    room.push_back(node->Contour);
-    for (const ClipperLib::PolyNode* hole : node->Childs) room.push_back(hole->Contour);
-  }
-  return Region2d::fromPaths(room, FillRule::NonZero);
+  for (const Box2& b : keepOff)
+    avoid.push_back({{b.min.x - half.x, b.min.y - half.y}, {b.max.x + half.x, b.max.y + half.y}, false});
+  return inner.boxCentres(half, window, avoid);
 }
 
 double labelWidth(const std::string& text, double height) {

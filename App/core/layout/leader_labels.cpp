@@ -56,24 +56,10 @@ bool meetsBox(Vec2 a, Vec2 b, Vec2 lo, Vec2 hi) {
   return true;
 }
 
-// Whether the segment a-b lies over `room` all along, to Clipper's units (it clips an open
-// path): the final word on a leader the quicker tests below chose.
+// Whether the segment a-b lies over `room` all along, to Clipper's units: the final word
+// on a leader the quicker tests below chose. A speck of rounding at an end is no exit.
 bool overPaper(const Region2d& room, Vec2 a, Vec2 b) {
-  ClipperLib::Clipper clipper;
-  clipper.AddPath(
-      {{Region2d::toUnits(a.x), Region2d::toUnits(a.y)}, {Region2d::toUnits(b.x), Region2d::toUnits(b.y)}},
-      ClipperLib::ptSubject, false);
-  clipper.AddPaths(room.paths(), ClipperLib::ptClip, true);
-  ClipperLib::PolyTree outside;
-  clipper.Execute(ClipperLib::ctDifference, outside, ClipperLib::pftNonZero, ClipperLib::pftNonZero);
-  ClipperLib::Paths pieces;
-  ClipperLib::OpenPathsFromPolyTree(outside, pieces);
-  for (const ClipperLib::Path& piece : pieces)  // a speck of rounding at an end is no exit
-    for (size_t i = 1; i < piece.size(); ++i)
-      if (std::hypot(Region2d::toMm(piece[i].X - piece[i - 1].X),
-                     Region2d::toMm(piece[i].Y - piece[i - 1].Y)) > 1e-3)
-        return false;
-  return true;
+  return room.containsSegment(a, b, 1e-3);
 }
 
 // Where a leader may end at the slot, in its paper: just beyond either end of the slot on
@@ -91,7 +77,7 @@ std::vector<Vec2> targets(const Region2d& room, const LabelSpot& s) {
             {s.x - s.slotWidth / 2 - d, mid}};
   std::vector<Vec2> in;
   for (const Vec2& t : ends)
-    if (regionContains(room, t)) in.push_back(t);
+    if (room.contains(t)) in.push_back(t);
   return in;
 }
 
@@ -129,7 +115,7 @@ struct Field {
       for (const Vec2 c :
            {Vec2{l.at.x - h.x - b, l.at.y - h.y - b}, Vec2{l.at.x + h.x + b, l.at.y - h.y - b},
             Vec2{l.at.x + h.x + b, l.at.y + h.y + b}, Vec2{l.at.x - h.x - b, l.at.y + h.y + b}})
-        if (near(c) && regionContains(room, c)) bends.push_back(c);
+        if (near(c) && room.contains(c)) bends.push_back(c);
       for (size_t i = 1; i < l.leader.size(); ++i) leaders.push_back({l.leader[i - 1], l.leader[i]});
     }
   }
@@ -143,7 +129,7 @@ struct Field {
       if (segmentsCross(a, b, l.a, l.b)) return false;
     for (const Segment& e : edges)
       if (segmentsCross(a, b, e.a, e.b)) return false;
-    return regionContains(room, {(a.x + b.x) / 2, (a.y + b.y) / 2});
+    return room.contains({(a.x + b.x) / 2, (a.y + b.y) / 2});
   }
 };
 
@@ -191,7 +177,7 @@ std::vector<Vec2> centres(const Region2d& room, Vec2 t) {
   const Box2 b = room.bounds();
   for (double x = b.min.x + kStep / 2; x < b.max.x; x += kStep)
     for (double y = b.min.y + kStep / 2; y < b.max.y; y += kStep)
-      if (regionContains(room, {x, y})) out.push_back({x, y});
+      if (room.contains({x, y})) out.push_back({x, y});
   return out;
 }
 

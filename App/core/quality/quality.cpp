@@ -4,6 +4,7 @@
 #include <algorithm>
 
 #include "support/parallel.hpp"
+#include "support/per_family.hpp"
 
 namespace sliceform {
 namespace {
@@ -77,12 +78,11 @@ Quality measureQuality(const SliceSet& u, const SliceSet& v, const std::vector<C
 
   std::vector<Region2d::Loop> model, lattice;
   for (const Slice& s : u.slices) addStrips(u, v, s.region, s.position, true, model);
-  for (const ScaffoldPatch& p : scaffold.patches) {
-    const SliceSet& set = p.family == Family::U ? u : v;
-    const SliceSet& other = p.family == Family::U ? v : u;
-    const auto& cylinders = p.family == Family::U ? uCylinders : vCylinders;
-    addStrips(set, other, cylinders[p.cylinder].section, p.position, p.family == Family::U, lattice);
-  }
+  const PerFamily<const SliceSet&> sets{u, v};
+  const PerFamily<const std::vector<Cylinder>&> cylinders{uCylinders, vCylinders};
+  for (const ScaffoldPatch& p : scaffold.patches)
+    addStrips(sets[p.family], sets[other(p.family)], cylinders[p.family][p.cylinder].section, p.position,
+              p.family == Family::U, lattice);
   q.silhouetteIouW =
       iou(Region2d::fromLoops(model, FillRule::NonZero), Region2d::fromLoops(lattice, FillRule::NonZero));
   q.volumeIou = std::min(volumeIou(u, uCylinders), volumeIou(v, vCylinders));

@@ -145,7 +145,7 @@ GrazeRepair avoidGrazes(Arrangement& a, const SlotParams& params, double toleran
     std::vector<int> which{std::get<0>(hinge), std::get<1>(hinge)};
     const auto areaOf = [&](int k) {
       const ScaffoldPatch& p = a.scaffold.patches[k];
-      return (p.family == Family::U ? a.uCylinders : a.vCylinders)[p.cylinder].section.area();
+      return a.cylinders(p.family)[p.cylinder].section.area();
     };
     if (areaOf(which[1]) < areaOf(which[0])) std::swap(which[0], which[1]);
     for (const int k : which) {

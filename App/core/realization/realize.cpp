@@ -173,11 +173,10 @@ class Search {
     st->cuts = planSlots(*lines_[p], patchHinges(in_, slots, p), params_);
     st->slotted = cutters_[p]->cut(slotRegion(st->cuts, params_), &st->pieces);
     st->holes = holeLoops(st->slotted, ps.position);
-    const bool isU = ps.family == Family::U;
     for (const int h : hingesOf_[p]) {
       const ScaffoldHinge& hinge = in_.hinges[h];
-      const double x = lineX(isU ? in_.uFrame : in_.vFrame, isU ? in_.vFrame : in_.uFrame,
-                             in_.patches[isU ? hinge.v : hinge.u].position);
+      const double x = lineX(in_.frames[ps.family], in_.frames[other(ps.family)],
+                             in_.patches[hinge.patch(other(ps.family))].position);
       std::vector<double> lengths;
       for (const Interval& i : intersectIntervals(st->slotted.intervalsOnLine({x, 0}, {0, 1}), {hinge.w}))
         lengths.push_back(i.hi - i.lo);
@@ -229,8 +228,7 @@ class Search {
   using PatchKey = std::pair<int, std::vector<Slot>>;
   PatchKey patchKey(int p, const std::vector<SlotPair>& slots) const {
     PatchKey key{p, {}};
-    const bool isU = in_.patches[p].family == Family::U;
-    for (const int h : hingesOf_[p]) key.second.push_back(isU ? uSlot(slots[h]) : vSlot(slots[h]));
+    for (const int h : hingesOf_[p]) key.second.push_back(familySlot(in_.patches[p].family, slots[h]));
     return key;
   }
 
@@ -275,7 +273,7 @@ class Search {
       if (in_.patches[q].family == in_.patches[p].family) continue;
       const int a = isU ? p : q, b = isU ? q : p;
       locks_[static_cast<size_t>(a) * n_ + b] =
-          interlockCount(state_[a]->holes, in_.uFrame, state_[b]->holes, in_.vFrame);
+          interlockCount(state_[a]->holes, in_.frames.u, state_[b]->holes, in_.frames.v);
     }
   }
 
@@ -466,8 +464,8 @@ class Search {
         const Slot s = p == hinge.u ? uSlot(slots_[h]) : vSlot(slots_[h]);
         if (s != Slot::Up && s != Slot::Down) continue;
         const int other = p == hinge.u ? hinge.v : hinge.u;
-        const SliceFrame& f = in_.patches[p].family == Family::U ? in_.uFrame : in_.vFrame;
-        const SliceFrame& g = in_.patches[p].family == Family::U ? in_.vFrame : in_.uFrame;
+        const SliceFrame& f = in_.frames[in_.patches[p].family];
+        const SliceFrame& g = in_.frames[in_.patches[other].family];
         const Vec2 at{lineX(f, g, in_.patches[other].position), root};
         minEdge = std::min(minEdge, distanceToBoundary(outlines[p], at) - params_.width() / 2);
       }
@@ -540,15 +538,14 @@ std::vector<PatchHinge> patchHinges(const RealizationInput& input, const std::ve
                                     int patch) {
   std::vector<PatchHinge> out;
   const PatchShape& p = input.patches[patch];
-  const bool isU = p.family == Family::U;
-  const SliceFrame& f = isU ? input.uFrame : input.vFrame;
-  const SliceFrame& g = isU ? input.vFrame : input.uFrame;
+  const SliceFrame& f = input.frames[p.family];
+  const SliceFrame& g = input.frames[other(p.family)];
   for (size_t h = 0; h < input.hinges.size(); ++h) {
     const ScaffoldHinge& hinge = input.hinges[h];
-    if ((isU ? hinge.u : hinge.v) != patch) continue;
-    const double x = lineX(f, g, input.patches[isU ? hinge.v : hinge.u].position);
+    if (hinge.patch(p.family) != patch) continue;
+    const double x = lineX(f, g, input.patches[hinge.patch(other(p.family))].position);
     const Interval& at = hinge.holds ? hinge.grip : hinge.w;
-    out.push_back({x, hinge.w, (at.lo + at.hi) / 2, isU ? uSlot(slots[h]) : vSlot(slots[h])});
+    out.push_back({x, hinge.w, (at.lo + at.hi) / 2, familySlot(p.family, slots[h])});
   }
   return out;
 }
@@ -583,12 +580,9 @@ RealizationInput realizationInput(const Arrangement& a, double tolerance) {
 
 RealizationInput realizationInput(const Arrangement& a, const Scaffold& scaffold, double tolerance) {
   RealizationInput in;
-  in.uFrame = a.u.frame;
-  in.vFrame = a.v.frame;
-  for (const ScaffoldPatch& p : scaffold.patches) {
-    const std::vector<Cylinder>& cylinders = p.family == Family::U ? a.uCylinders : a.vCylinders;
-    in.patches.push_back({p.family, p.position, cylinders[p.cylinder].section, p.cylinder});
-  }
+  in.frames = {a.u.frame, a.v.frame};
+  for (const ScaffoldPatch& p : scaffold.patches)
+    in.patches.push_back({p.family, p.position, a.cylinders(p.family)[p.cylinder].section, p.cylinder});
   in.hinges = scaffold.hinges;
   in.tolerance = tolerance;
   return in;

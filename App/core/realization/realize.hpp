@@ -27,6 +27,7 @@
 #include "realization/slots.hpp"
 #include "slicing/slice_set.hpp"
 #include "support/deadline.hpp"
+#include "support/per_family.hpp"
 
 namespace sliceform {
 
@@ -40,7 +41,7 @@ struct PatchShape {
 };
 
 struct RealizationInput {
-  SliceFrame uFrame, vFrame;
+  PerFamily<SliceFrame> frames;
   std::vector<PatchShape> patches;
   std::vector<ScaffoldHinge> hinges;
   double tolerance = 0;  // mm the polygon shapes may stray from the true ones

@@ -44,20 +44,16 @@ double openEnd(const VerticalLines& shape, double x, double halfWidth, double en
   return end + dir * run;
 }
 
-ClipperLib::Path rectangle(double x0, double y0, double x1, double y1) {
-  using R = Region2d;
-  return {{R::toUnits(x0), R::toUnits(y0)},
-          {R::toUnits(x1), R::toUnits(y0)},
-          {R::toUnits(x1), R::toUnits(y1)},
-          {R::toUnits(x0), R::toUnits(y1)}};
+Region2d::Loop rectangle(double x0, double y0, double x1, double y1) {
+  return {{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}};
 }
 
-ClipperLib::Path disc(double cx, double cy, double r) {
-  ClipperLib::Path out;
+Region2d::Loop disc(double cx, double cy, double r) {
+  Region2d::Loop out;
   const int n = 48;
   for (int k = 0; k < n; ++k) {
     const double t = 2 * kPi * k / n;
-    out.push_back({Region2d::toUnits(cx + r * std::cos(t)), Region2d::toUnits(cy + r * std::sin(t))});
+    out.push_back({cx + r * std::cos(t), cy + r * std::sin(t)});
   }
   return out;
 }
@@ -72,13 +68,10 @@ struct Segment {
   Vec2 a, b;
 };
 
-std::vector<Segment> segments(const ClipperLib::Paths& paths) {
+std::vector<Segment> segments(const std::vector<Region2d::Loop>& loops) {
   std::vector<Segment> out;
-  for (const ClipperLib::Path& path : paths)
-    for (size_t i = 0, n = path.size(); i < n; ++i) {
-      const ClipperLib::IntPoint &a = path[i], &b = path[(i + 1) % n];
-      out.push_back({{Region2d::toMm(a.X), Region2d::toMm(a.Y)}, {Region2d::toMm(b.X), Region2d::toMm(b.Y)}});
-    }
+  for (const Region2d::Loop& loop : loops)
+    for (size_t i = 0, n = loop.size(); i < n; ++i) out.push_back({loop[i], loop[(i + 1) % n]});
   return out;
 }
 
@@ -175,6 +168,10 @@ Slot vSlot(SlotPair pair) {
   return Slot::None;
 }
 
+Slot familySlot(Family f, SlotPair pair) {
+  return f == Family::U ? uSlot(pair) : vSlot(pair);
+}
+
 VerticalLines::VerticalLines(const Region2d& shape, const std::vector<double>& xs) : shape_(&shape) {
   for (const double x : xs)
     if (!lines_.count(x)) lines_.emplace(x, shape.intervalsOnLine({x, 0}, {0, 1}));
@@ -268,27 +265,27 @@ SlotShapes slotShapes(const std::vector<SlotCut>& cuts, const SlotParams& params
 
 Region2d slotRegion(const std::vector<SlotCut>& cuts, const SlotParams& params) {
   const SlotShapes shapes = slotShapes(cuts, params);
-  ClipperLib::Paths paths;
-  for (const Box2& b : shapes.rectangles) paths.push_back(rectangle(b.min.x, b.min.y, b.max.x, b.max.y));
-  for (const Disc& d : shapes.discs) paths.push_back(disc(d.centre.x, d.centre.y, d.radius));
-  return Region2d::fromPaths(paths, FillRule::NonZero);
+  std::vector<Region2d::Loop> loops;
+  for (const Box2& b : shapes.rectangles) loops.push_back(rectangle(b.min.x, b.min.y, b.max.x, b.max.y));
+  for (const Disc& d : shapes.discs) loops.push_back(disc(d.centre.x, d.centre.y, d.radius));
+  return Region2d::fromLoops(loops, FillRule::NonZero);
 }
 
 namespace {
 
 // One connected piece of an eroded region: an outer loop with its holes.
 struct Part {
-  ClipperLib::Paths paths;
-  double area = 0;  // mm²
-  Box2 box;
+  Region2d region;
+  std::vector<Region2d::Loop> loops;  // region.loops()
+  double area = 0;                    // mm²
+  Box2 box;                           // of the first loop
 };
 
-Part makePart(const ClipperLib::Paths& paths) {
-  Part part{paths, 0, {}};
-  for (const ClipperLib::Path& path : paths) part.area += ClipperLib::Area(path);
-  part.area /= Region2d::kUnitsPerMm * Region2d::kUnitsPerMm;
-  for (const ClipperLib::IntPoint& q : paths.front()) {
-    const Vec2 v{Region2d::toMm(q.X), Region2d::toMm(q.Y)};
+Part makePart(Region2d piece) {
+  Part part{std::move(piece), {}, 0, {}};
+  part.loops = part.region.loops();
+  part.area = part.region.area();
+  for (const Vec2& v : part.loops.front()) {
     if (part.box.empty) part.box = {v, v, false};
     part.box.min = {std::min(part.box.min.x, v.x), std::min(part.box.min.y, v.y)};
     part.box.max = {std::max(part.box.max.x, v.x), std::max(part.box.max.y, v.y)};
@@ -319,7 +316,7 @@ int countOpenedParts(const std::vector<Part>& parts, double neck, double crumb, 
     for (size_t j = i + 1; j < parts.size(); ++j) {
       if (root(i) == root(j) || apart(parts[i].box, parts[j].box, gap)) continue;
       for (const size_t k : {i, j})
-        if (edges[k].empty()) edges[k] = segments(parts[k].paths);
+        if (edges[k].empty()) edges[k] = segments(parts[k].loops);
       if (!fartherThan(edges[i], parts[i].box, edges[j], parts[j].box, gap)) cluster[root(j)] = root(i);
     }
   std::vector<std::vector<size_t>> members(parts.size());
@@ -342,10 +339,9 @@ int countOpenedParts(const std::vector<Part>& parts, double neck, double crumb, 
       ++n;
       continue;
     }
-    ClipperLib::Paths together;
-    for (const size_t i : group)
-      together.insert(together.end(), parts[i].paths.begin(), parts[i].paths.end());
-    Region2d grown = Region2d::fromPaths(together, FillRule::NonZero).offset(neck);
+    std::vector<Region2d> together;
+    for (const size_t i : group) together.push_back(parts[i].region);
+    Region2d grown = Region2d::uniteAtOnce(together).offset(neck);
     piece(std::move(grown));
   }
   return n;
@@ -355,7 +351,7 @@ int countOpenedParts(const std::vector<Part>& parts, double neck, double crumb, 
 
 int openedPieceCount(const Region2d& region, double neck, double crumb) {
   std::vector<Part> parts;
-  for (const Region2d& part : region.offset(-neck).components()) parts.push_back(makePart(part.paths()));
+  for (Region2d& part : region.offset(-neck).components()) parts.push_back(makePart(std::move(part)));
   return countOpenedParts(parts, neck, crumb, 0, nullptr);
 }
 
@@ -428,15 +424,9 @@ int SlotCutter::countPieces(const Region2d& slots, int kept, std::vector<Region2
   // shape is eroded once: one Boolean instead of eroding the whole outline again. The two
   // differ only in how round corners are cut into chords (1 µm), so the count could differ
   // from eroding the slotted shape only on a bridge within microns of the neck.
-  ClipperLib::Clipper clipper;
-  clipper.AddPaths(erodedShape_.paths(), ClipperLib::ptSubject, true);
-  clipper.AddPaths(slots.offset(neck_).paths(), ClipperLib::ptClip, true);
-  ClipperLib::PolyTree tree;
-  clipper.Execute(ClipperLib::ctDifference, tree, ClipperLib::pftNonZero, ClipperLib::pftNonZero);
   std::vector<Part> parts;
-  forEachComponent(tree, [&](const ClipperLib::Paths& paths) {
-    if (paths.front().size() >= 3) parts.push_back(makePart(paths));
-  });
+  for (Region2d& piece : erodedShape_.subtractComponentsRaw(slots.offset(neck_)))
+    parts.push_back(makePart(std::move(piece)));
   const int opened = countOpenedParts(parts, neck_, crumb_, kSliverCrumbs * crumb_, slivers);
   return std::max(kept, opened - shapePieces_ + 1);
 }

@@ -15,6 +15,7 @@
 
 #include "geometry/region2d.hpp"
 #include "geometry/vec.hpp"
+#include "slicing/slice_set.hpp"
 
 namespace sliceform {
 
@@ -25,6 +26,8 @@ const char* slotName(Slot slot);  // "up", "down", "through", "none"
 enum class SlotPair { UpDown, DownUp, ThroughNone, NoneThrough };
 Slot uSlot(SlotPair pair);
 Slot vSlot(SlotPair pair);
+// The one a patch of family f gets: uSlot or vSlot.
+Slot familySlot(Family f, SlotPair pair);
 
 enum class SlotEnd { Square, Round };
 

@@ -64,9 +64,7 @@ Emitted checkEmitted(const RealizationInput& input, const std::vector<Region2d>&
 
   // Where each patch lies on the line of every patch of the other family.
   const auto on = [&](int p, int q) {
-    const bool isU = ps[p].family == Family::U;
-    const double x =
-        lineX(isU ? input.uFrame : input.vFrame, isU ? input.vFrame : input.uFrame, ps[q].position);
+    const double x = lineX(input.frames[ps[p].family], input.frames[ps[q].family], ps[q].position);
     if (boxes[p].empty || x < boxes[p].min.x || x > boxes[p].max.x) return std::vector<Interval>{};
     return outlines[p].intervalsOnLine({x, 0}, {0, 1});
   };
@@ -106,7 +104,7 @@ Emitted checkEmitted(const RealizationInput& input, const std::vector<Region2d>&
   for (int p = 0; p < n; ++p) holes[p] = holeLoops(outlines[p], ps[p].position);
   for (const int a : us) {
     for (const int b : vs) {
-      const int count = interlockCount(holes[a], input.uFrame, holes[b], input.vFrame);
+      const int count = interlockCount(holes[a], input.frames.u, holes[b], input.frames.v);
       if (count == 0) continue;
       e.interlocks += count;
       e.interlocked.push_back({a, b});
