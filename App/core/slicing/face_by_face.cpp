@@ -213,6 +213,17 @@ TopoDS_Edge piece(const Curve& c, const End& a, double tb, const End& b) {
   return edge;
 }
 
+// Whether planes normal to `n` cut the face's surface in conics: planes, cylinders, cones,
+// spheres, and tori whose axis is the normal. A torus along the planes is cut in conics only
+// by the plane through its axis; the others are quartics, so the whole plane is left to the
+// section at once rather than after its other faces were cut (a plane through the axis
+// falls to the section too).
+bool solvedBy(const BRepAdaptor_Surface& s, const gp_Dir& n) {
+  const GeomAbs_SurfaceType type = s.GetType();
+  if (type == GeomAbs_Torus) return s.Torus().Axis().Direction().IsParallel(n, Precision::Angular());
+  return type == GeomAbs_Plane || type == GeomAbs_Cylinder || type == GeomAbs_Cone || type == GeomAbs_Sphere;
+}
+
 TopoDS_Vertex vertexAt(const gp_Pnt& p, double tolerance) {
   TopoDS_Vertex v;
   BRep_Builder().MakeVertex(v, p, tolerance);
@@ -237,6 +248,7 @@ FaceByFace::FaceByFace(const TopoDS_Shape& solid, const gp_Dir& normal) : normal
     BRepBndLib::Add(f.face, f.box);
     std::tie(f.lo, f.hi) = along(f.box, normal);
     BRepTools::UVBounds(f.face, f.uv[0], f.uv[1], f.uv[2], f.uv[3]);
+    f.solved = solvedBy(BRepAdaptor_Surface(f.face, Standard_False), normal);
     for (TopExp_Explorer e(f.face, TopAbs_EDGE); e.More(); e.Next()) {
       const int index = edges.FindIndex(e.Current()) - 1;
       if (std::find(f.edges.begin(), f.edges.end(), index) == f.edges.end()) f.edges.push_back(index);
@@ -247,6 +259,8 @@ FaceByFace::FaceByFace(const TopoDS_Shape& solid, const gp_Dir& normal) : normal
 
 Handle(TopTools_HSequenceOfShape) FaceByFace::edges(const gp_Pln& plane) const try {
   const double d = normal_.XYZ().Dot(plane.Location().XYZ());
+  for (const Face& f : faces_)
+    if (!f.solved && d >= f.lo && d <= f.hi) return nullptr;
   // Each edge's crossings and their vertices, shared by the faces on either side.
   std::vector<std::vector<std::pair<gp_Pnt, TopoDS_Vertex>>> crossed(edges_.size());
   for (size_t i = 0; i < edges_.size(); ++i) {

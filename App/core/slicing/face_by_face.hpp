@@ -47,6 +47,7 @@ class FaceByFace {
     double lo, hi;
     double uv[4];            // its parameter box: u min, u max, v min, v max
     std::vector<int> edges;  // indices into edges_, each once (a seam too)
+    bool solved;             // whether the planes cut it in conics (see solvedBy)
   };
   gp_Dir normal_;
   std::vector<Edge> edges_;
