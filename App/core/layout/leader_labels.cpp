@@ -7,6 +7,7 @@
 // out of a narrow tip), that crosses no label and no other leader.
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 #include "layout/label_room.hpp"
 
@@ -107,16 +108,26 @@ struct Field {
         if (nl > 1e-9)
           bends.push_back({v.x + kInset * (na.x + nb.x) / nl, v.y + kInset * (na.y + nb.y) / nl});
       }
+    // Every segment tested lies within the square of half side r about t (bends and
+    // label centres are in it), so what lies wholly outside it cannot meet one.
+    const auto reaches = [&](Vec2 lo, Vec2 hi) {
+      return lo.x < t.x + r && hi.x > t.x - r && lo.y < t.y + r && hi.y > t.y - r;
+    };
     for (const Label& l : taken) {
       const Vec2 h = halfSize(l.text, l.height, l.vertical);
-      boxes.push_back({{l.at.x - h.x - g, l.at.y - h.y - g}, {l.at.x + h.x + g, l.at.y + h.y + g}});
+      const Vec2 lo{l.at.x - h.x - g, l.at.y - h.y - g}, hi{l.at.x + h.x + g, l.at.y + h.y + g};
+      if (reaches(lo, hi)) boxes.push_back({lo, hi});
       // A path round a label bends at its box's corners, a little outside.
       const double b = g + kInset;
       for (const Vec2 c :
            {Vec2{l.at.x - h.x - b, l.at.y - h.y - b}, Vec2{l.at.x + h.x + b, l.at.y - h.y - b},
             Vec2{l.at.x + h.x + b, l.at.y + h.y + b}, Vec2{l.at.x - h.x - b, l.at.y + h.y + b}})
         if (near(c) && room.contains(c)) bends.push_back(c);
-      for (size_t i = 1; i < l.leader.size(); ++i) leaders.push_back({l.leader[i - 1], l.leader[i]});
+      for (size_t i = 1; i < l.leader.size(); ++i) {
+        const Vec2 a = l.leader[i - 1], b = l.leader[i];
+        if (reaches({std::min(a.x, b.x), std::min(a.y, b.y)}, {std::max(a.x, b.x), std::max(a.y, b.y)}))
+          leaders.push_back({a, b});
+      }
     }
   }
 
@@ -249,18 +260,29 @@ std::vector<Stroke> leaderStrokes(const Stroke& leader) {
 std::optional<Label> leaderLabel(const Region2d& inner, const Region2d& leaderRoom, const LabelSpot& s,
                                  const std::vector<Label>& taken, const std::vector<double>& heights) {
   const std::vector<Box2> keepOff = leaderBoxes(taken);
+  const std::vector<Vec2> ts = targets(leaderRoom, s);
+  // The room for each target, size and direction, the same for both gaps: made once.
+  std::vector<std::optional<Region2d>> rooms(ts.size() * heights.size() * 2);
   for (const double gap : kLeaderGaps)
-    for (const Vec2& t : targets(leaderRoom, s)) {
-      const Field field(leaderRoom, taken, t, gap);
-      const Routes paths = shortestPaths(field, t);
-      for (const double height : heights)
+    for (size_t i = 0; i < ts.size(); ++i) {
+      const Vec2 t = ts[i];
+      // The paths only once a label has room somewhere: most slots left without a label
+      // have none, and the paths are the costly part (all pairs of bends).
+      std::optional<Field> field;
+      Routes paths;
+      for (size_t j = 0; j < heights.size(); ++j)
         for (const bool vertical : {false, true}) {
+          const double height = heights[j];
           const Vec2 half = halfSize(s.text, height, vertical);
-          const Box2 window{{t.x - kReach, t.y - kReach}, {t.x + kReach, t.y + kReach}, false};
-          const Region2d room = freeFor(inner, taken, half, window, keepOff);
-          if (room.empty()) continue;
+          std::optional<Region2d>& room = rooms[(i * heights.size() + j) * 2 + vertical];
+          if (!room) {
+            const Box2 window{{t.x - kReach, t.y - kReach}, {t.x + kReach, t.y + kReach}, false};
+            room = freeFor(inner, taken, half, window, keepOff);
+          }
+          if (room->empty()) continue;
+          if (!field) field.emplace(leaderRoom, taken, t, gap), paths = shortestPaths(*field, t);
           Vec2 centre;
-          Stroke leader = shortestLeader(field, paths, centres(room, t), half, centre);
+          Stroke leader = shortestLeader(*field, paths, centres(*room, t), half, centre);
           if (leader.empty()) continue;
           Label label = setLabel(s.text, centre, height, vertical);
           for (Stroke& stroke : leaderStrokes(leader)) label.strokes.push_back(std::move(stroke));
