@@ -265,20 +265,22 @@ TEST(BrepSlicer, PlaneMissingTheSolidGivesNothing) {
 // (slicing/face_by_face.hpp) and OCCT's section curves (slicing/section_faces.hpp) give the
 // Common's areas and holes, and the mesh's polygon sections within the mesh deflection
 // along the outline. The cases reach every kind of curve the face-by-face route makes:
-// lines, circles, ellipses (cylinders across), a cone's hyperbolas; a torus cut along its
-// axis, which no conic describes, goes on to the section curves.
+// lines, circles, ellipses (cylinders across), a cone's hyperbolas, and a torus cut along
+// its axis in one loop and in two (interpolated: slicing/torus_section.hpp); a torus cut
+// aslant goes on to the section curves.
 TEST(BrepSlicer, SectionRoutesMakeTheFacesOfSolidsWithHoles) {
   const double d = 0.01;
   struct Case {
     const char* name;
     TopoDS_Shape shape;
     Vec3 normal;
-    bool conics = true;  // whether the face-by-face route solves its faces
+    bool solved = true;  // whether the face-by-face route solves its faces
   } cases[] = {{"holed box along the holes", holedBox(), {0, 0, 1}},
                {"holed box across", holedBox(), {1, 0.2, 0}},
                {"hollow sphere", test::makeHollowSphere(10, 6), {0, 1, 1}},
                {"torus across its axis", test::makeTorus(10, 3), {0, 0, 1}},
-               {"torus along its axis", test::makeTorus(10, 3), {1, 0, 0}, false},
+               {"torus along its axis", test::makeTorus(10, 3), {1, 0, 0}},
+               {"torus aslant", test::makeTorus(10, 3), {1, 0, 1}, false},
                {"cone with a bore, along its axis", coneWithBore(), {1, 0, 0}}};
   for (const Case& c : cases) {
     SCOPED_TRACE(c.name);
@@ -297,7 +299,7 @@ TEST(BrepSlicer, SectionRoutesMakeTheFacesOfSolidsWithHoles) {
       size_t nested = 0;  // holes and outlines beside another
       for (size_t i = 0; i < positions.size(); ++i) {
         const ExactSlice& s = made[i];
-        EXPECT_EQ(s.route, c.conics ? route : SectionRoute::Curves) << "at " << positions[i];
+        EXPECT_EQ(s.route, c.solved ? route : SectionRoute::Curves) << "at " << positions[i];
         EXPECT_EQ(common[i].route, SectionRoute::Common);
         ASSERT_FALSE(s.faces.IsNull()) << "at " << positions[i];
         EXPECT_NEAR(s.area, common[i].area, 1e-7 * common[i].area) << "at " << positions[i];

@@ -16,6 +16,7 @@
 #include <Geom_Hyperbola.hxx>
 #include <Geom_Line.hxx>
 #include <Geom_Parabola.hxx>
+#include <GeomAPI_ProjectPointOnCurve.hxx>
 #include <IntAna_QuadQuadGeo.hxx>
 #include <Standard_Failure.hxx>
 #include <TopExp.hxx>
@@ -28,6 +29,8 @@
 #include <cmath>
 #include <limits>
 #include <optional>
+
+#include "slicing/torus_section.hpp"
 
 namespace sliceform {
 namespace {
@@ -96,11 +99,13 @@ bool crossings(const TopoDS_Edge& edge, double tolerance, const gp_Dir& n, doubl
   return true;
 }
 
-// A curve of a face's section (a conic) and the parameters it spans.
+// A curve of a face's section (a conic, or a torus's loop), the parameters it spans, and
+// how far it may be from the exact intersection (0 for a conic).
 struct Curve {
   Handle(Geom_Curve) curve;
   double first = 0, last = 0;
   bool periodic = false;
+  double tolerance = 0;
 };
 
 // The parameter range of an unbounded curve that covers `box`: past it the curve is
@@ -134,8 +139,22 @@ bool surfaceCurves(const BRepAdaptor_Surface& s, const gp_Pln& plane, const Bnd_
     case GeomAbs_Torus: q.Perform(plane, s.Torus(), confusion); break;
     default: break;
   }
-  // B-splines, surfaces of revolution, tori cut off their axes: left to the section. Walking
-  // them with GeomInt_IntSS was tried: as fast as the section's own walk, but its curves made
+  // A torus along the plane: its loops (slicing/torus_section.hpp).
+  if (s.GetType() == GeomAbs_Torus && (!q.IsDone() || q.TypeInter() == IntAna_NoGeometricSolution)) {
+    const std::optional<TorusSection> section = torusSection(s.Torus(), plane);
+    if (!section) return false;
+    for (const Handle(Geom_BSplineCurve)& loop : section->loops) {
+      Curve c;
+      c.curve = loop;
+      c.first = loop->FirstParameter(), c.last = loop->LastParameter();
+      c.periodic = true;
+      c.tolerance = section->tolerance;
+      out.push_back(c);
+    }
+    return true;
+  }
+  // B-splines, surfaces of revolution, tori cut aslant: left to the section. Walking them
+  // with GeomInt_IntSS was tried: as fast as the section's own walk, but its curves made
   // exact patches break rules their polygons keep (occt-misc Bottom.brep: 9 patches emitted
   // as polygons instead of 3; MODERN_Sink_1: 9 instead of 2).
   if (s.GetType() > GeomAbs_Torus || !q.IsDone() || q.TypeInter() == IntAna_NoGeometricSolution) return false;
@@ -170,8 +189,28 @@ std::pair<double, double> project(const Curve& c, const gp_Pnt& p) {
   else if (auto ellipse = Handle(Geom_Ellipse)::DownCast(c.curve)) t = ElCLib::Parameter(ellipse->Elips(), p);
   else if (auto parabola = Handle(Geom_Parabola)::DownCast(c.curve)) t = ElCLib::Parameter(parabola->Parab(), p);
   else if (auto hyperbola = Handle(Geom_Hyperbola)::DownCast(c.curve)) t = ElCLib::Parameter(hyperbola->Hypr(), p);
-  else return {0, std::numeric_limits<double>::max()};
+  else {
+    // A torus's loop: closed, so the projection has a minimum inside it.
+    GeomAPI_ProjectPointOnCurve projection(p, c.curve, c.first, c.last);
+    if (projection.NbPoints() == 0) return {0, std::numeric_limits<double>::max()};
+    return {projection.LowerDistanceParameter(), projection.LowerDistance()};
+  }
   return {t, c.curve->Value(t).Distance(p)};
+}
+
+// The parameters of a point on a torus. ElSLib takes the tube's circle on the point's side
+// of the axis; on a spindle torus (R < r) the point may lie on the circle past the axis,
+// at u + π: the one whose circle the point is nearer is its own.
+void torusParameters(const gp_Torus& torus, const gp_Pnt& p, double& u, double& v) {
+  ElSLib::Parameters(torus, p, u, v);
+  const double big = torus.MajorRadius(), small = torus.MinorRadius();
+  if (big >= small) return;
+  const gp_Ax3& frame = torus.Position();
+  const gp_XYZ d = p.XYZ() - frame.Location().XYZ();
+  const double x = d.Dot(frame.XDirection().XYZ()), y = d.Dot(frame.YDirection().XYZ());
+  const double z = d.Dot(frame.Direction().XYZ()), across = std::hypot(x, y);
+  if (std::abs(std::hypot(across + big, z) - small) < std::abs(std::hypot(across - big, z) - small))
+    u = std::atan2(y, x) + M_PI, v = std::atan2(z, -across - big);
 }
 
 // Where a point of the surface lies on the face.
@@ -182,7 +221,7 @@ TopAbs_State classify(const TopoDS_Face& face, const BRepAdaptor_Surface& s, con
     case GeomAbs_Cylinder: ElSLib::Parameters(s.Cylinder(), p, u, v); break;
     case GeomAbs_Cone: ElSLib::Parameters(s.Cone(), p, u, v); break;
     case GeomAbs_Sphere: ElSLib::Parameters(s.Sphere(), p, u, v); break;
-    case GeomAbs_Torus: ElSLib::Parameters(s.Torus(), p, u, v); break;
+    case GeomAbs_Torus: torusParameters(s.Torus(), p, u, v); break;
     default: return TopAbs_ON;  // no curves are made on other surfaces
   }
   if (s.IsUPeriodic()) u = ElCLib::InPeriod(u, uv[0], uv[0] + s.UPeriod());
@@ -206,21 +245,22 @@ TopoDS_Edge piece(const Curve& c, const End& a, double tb, const End& b) {
     if (gap > BRep_Tool::Tolerance(v)) builder.UpdateVertex(v, gap * 1.01);
   }
   TopoDS_Edge edge;
-  builder.MakeEdge(edge, c.curve, Precision::Confusion());
+  builder.MakeEdge(edge, c.curve, std::max(c.tolerance, Precision::Confusion()));
   builder.Add(edge, a.vertex.Oriented(TopAbs_FORWARD));
   builder.Add(edge, b.vertex.Oriented(TopAbs_REVERSED));
   builder.Range(edge, a.t, tb);
   return edge;
 }
 
-// Whether planes normal to `n` cut the face's surface in conics: planes, cylinders, cones,
-// spheres, and tori whose axis is the normal. A torus along the planes is cut in conics only
-// by the plane through its axis; the others are quartics, so the whole plane is left to the
-// section at once rather than after its other faces were cut (a plane through the axis
-// falls to the section too).
+// Whether this route solves the sections of the face by planes normal to `n`: planes,
+// cylinders, cones, spheres, and tori across or along the planes. A torus aslant is left to
+// the section at once, rather than after the plane's other faces were cut.
 bool solvedBy(const BRepAdaptor_Surface& s, const gp_Dir& n) {
   const GeomAbs_SurfaceType type = s.GetType();
-  if (type == GeomAbs_Torus) return s.Torus().Axis().Direction().IsParallel(n, Precision::Angular());
+  if (type == GeomAbs_Torus) {
+    const gp_Dir axis = s.Torus().Axis().Direction();
+    return axis.IsParallel(n, Precision::Angular()) || axis.IsNormal(n, Precision::Angular());
+  }
   return type == GeomAbs_Plane || type == GeomAbs_Cylinder || type == GeomAbs_Cone || type == GeomAbs_Sphere;
 }
 
@@ -286,7 +326,7 @@ Handle(TopTools_HSequenceOfShape) FaceByFace::edges(const gp_Pln& plane) const t
           const auto [t, distance] = project(curves[k], p);
           // 10 nm more than the tolerances say: edges of real files stray from their faces
           // by up to 1 µm where both claim 0.1 µm (occ/Bottom.brep).
-          if (distance <= 2 * (edges_[e].tolerance + faceTolerance) + 1e-5)
+          if (distance <= 2 * (edges_[e].tolerance + faceTolerance + curves[k].tolerance) + 1e-5)
             ends[k].push_back({t, vertex}), on = true;
         }
         if (!on) return nullptr;

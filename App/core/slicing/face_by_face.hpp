@@ -1,16 +1,17 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // Plane sections of a solid made face by face, without OCCT's Boolean machinery (its set-up
 // of interferences, pave blocks and curve checks was most of a plane's cost on parts of
-// planes and cylinders). Each face the plane reaches is intersected with it analytically
-// (IntAna_QuadQuadGeo: planes, cylinders, cones, spheres, and tori cut across or through
-// their axis); each curve is cut where the plane crosses the face's edges, and the pieces
-// inside the face are kept. Pieces of two faces meet at the one vertex made for each
-// crossing of their shared edge, so the edges chain into loops by shared vertices.
+// planes and cylinders). Each face the plane reaches is intersected with it: analytically
+// (IntAna_QuadQuadGeo: planes, cylinders, cones, spheres, tori cut across their axis), or,
+// for a torus cut along its axis, by loops interpolated through exact points
+// (slicing/torus_section.hpp); each curve is cut where the plane crosses the face's edges,
+// and the pieces inside the face are kept. Pieces of two faces meet at the one vertex made
+// for each crossing of their shared edge, so the edges chain into loops by shared vertices.
 //
 // The route answers nothing where it would have to guess or cannot solve, and the caller
-// then asks BRepAlgoAPI_Section: a face of another kind (B-spline, a torus cut off its
-// axes), a face on the plane, the plane through a vertex of the solid or tangent to a face,
-// a crossing on none of a face's curves, a piece on a face's boundary.
+// then asks BRepAlgoAPI_Section: a face of another kind (B-spline, a torus cut aslant), a
+// face on the plane, the plane through a vertex of the solid or tangent to a face, a
+// crossing on none of a face's curves, a piece on a face's boundary.
 #pragma once
 
 #include <Bnd_Box.hxx>
