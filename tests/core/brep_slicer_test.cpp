@@ -275,11 +275,12 @@ TEST(BrepSlicer, SectionRoutesMakeTheFacesOfSolidsWithHoles) {
     TopoDS_Shape shape;
     Vec3 normal;
     bool solved = true;  // whether the face-by-face route solves its faces
+    double within = 0;   // mm its curves may be from the exact ones (a torus's loops: 1 µm)
   } cases[] = {{"holed box along the holes", holedBox(), {0, 0, 1}},
                {"holed box across", holedBox(), {1, 0.2, 0}},
                {"hollow sphere", test::makeHollowSphere(10, 6), {0, 1, 1}},
                {"torus across its axis", test::makeTorus(10, 3), {0, 0, 1}},
-               {"torus along its axis", test::makeTorus(10, 3), {1, 0, 0}},
+               {"torus along its axis", test::makeTorus(10, 3), {1, 0, 0}, true, 1e-3},
                {"torus aslant", test::makeTorus(10, 3), {1, 0, 1}, false},
                {"cone with a bore, along its axis", coneWithBore(), {1, 0, 0}}};
   for (const Case& c : cases) {
@@ -302,7 +303,8 @@ TEST(BrepSlicer, SectionRoutesMakeTheFacesOfSolidsWithHoles) {
         EXPECT_EQ(s.route, c.solved ? route : SectionRoute::Curves) << "at " << positions[i];
         EXPECT_EQ(common[i].route, SectionRoute::Common);
         ASSERT_FALSE(s.faces.IsNull()) << "at " << positions[i];
-        EXPECT_NEAR(s.area, common[i].area, 1e-7 * common[i].area) << "at " << positions[i];
+        const double loops = route == SectionRoute::FaceByFace ? c.within * perimeter(s.faces) : 0;
+        EXPECT_NEAR(s.area, common[i].area, 1e-7 * common[i].area + loops) << "at " << positions[i];
         EXPECT_EQ(s.region.holeCount(), common[i].region.holeCount()) << "at " << positions[i];
         EXPECT_EQ(s.region.components().size(), common[i].region.components().size());
         // The mesh lies within d of the surface: its section within d of the exact one.

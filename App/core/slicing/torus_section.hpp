@@ -2,8 +2,7 @@
 // The section of a torus by a plane along its axis: one closed quartic loop, or two (a
 // spiric section), which no conic describes and IntAna_QuadQuadGeo does not solve. Its
 // points come in closed form, so each loop is interpolated by a periodic cubic B-spline
-// through them, with points added until the exact curve between them stays within 1 µm
-// (1e-8 of a large torus).
+// through them, with points added until the exact curve between them stays within 1 µm.
 // Walking it (GeomInt_IntSS) cost as much as the whole section did.
 #pragma once
 
