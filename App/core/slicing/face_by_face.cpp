@@ -279,7 +279,7 @@ FaceByFace::FaceByFace(const TopoDS_Shape& solid, const gp_Dir& normal) : normal
     const TopoDS_Edge& e = TopoDS::Edge(edges(i));
     Bnd_Box box;
     if (!BRep_Tool::Degenerated(e)) BRepBndLib::Add(e, box);
-    const auto [lo, hi] = box.IsVoid() ? std::pair{1.0, 0.0} : along(box, normal);  // never reached
+    const auto [lo, hi] = box.IsVoid() ? std::pair{1.0, 0.0} : along(box, normal);  // empty: never crossed
     edges_.push_back({e, lo, hi, std::max(BRep_Tool::Tolerance(e), Precision::Confusion())});
   }
   for (TopExp_Explorer it(solid, TopAbs_FACE); it.More(); it.Next()) {
@@ -316,7 +316,7 @@ Handle(TopTools_HSequenceOfShape) FaceByFace::edges(const gp_Pln& plane) const t
     const BRepAdaptor_Surface s(f.face, Standard_False);
     std::vector<Curve> curves;
     if (!surfaceCurves(s, plane, f.box, curves)) return nullptr;
-    // Each crossing of the face's edges to the curve it lies on.
+    // Each crossing of the face's edges to every curve it lies on.
     std::vector<std::vector<End>> ends(curves.size());
     const double faceTolerance = BRep_Tool::Tolerance(f.face);
     for (const int e : f.edges)
@@ -343,8 +343,6 @@ Handle(TopTools_HSequenceOfShape) FaceByFace::edges(const gp_Pln& plane) const t
           out->Append(BRepBuilderAPI_MakeEdge(c.curve, c.first, c.last).Edge());
         continue;
       }
-      // The stretches between consecutive ends; an open curve's own ends bound the first
-      // and last (a closed one's share a vertex), wherever no crossing is.
       // The stretches between consecutive crossings; an open curve (a line, a cone's
       // parabola or hyperbola) runs past the face at both ends, where its ends are.
       std::vector<End> bounds = cuts;
