@@ -318,6 +318,10 @@ std::vector<PatchFace> exactPatches(const Model& model, const Arrangement& a, co
         pf.pieces = static_cast<int>(kept.size());
         pf.shape = kept.size() == 1 ? kept.front() : compound(kept);
         pf.outline = polygoniseFaces(pf.shape, frame, kOutlineDeflection);
+        // Faces that overlap (a fuse that did not unify them) are one region to the checks
+        // but a cut path each to the cutter: the patch is emitted as its polygon.
+        if (pf.outline.components().size() < kept.size())
+          throw Error(ErrorKind::Geometry, "the exact faces of a patch overlap");
       });
     } catch (const Error&) {
       pf = polygonPatch(a, r, static_cast<int>(k), false);

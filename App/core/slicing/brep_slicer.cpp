@@ -239,8 +239,11 @@ std::vector<ExactSlice> sliceBrep(const TopoDS_Shape& solid, const SliceFrame& f
             const double p = frame.position({x, y, z});
             piece.lo = std::min(piece.lo, p), piece.hi = std::max(piece.hi, p);
           }
-      if (route == SectionRoute::FaceByFace)
-        piece.faces = std::make_shared<const FaceByFace>(piece.solid, toDir(frame.normal));
+      if (route == SectionRoute::FaceByFace) try {
+          piece.faces = std::make_shared<const FaceByFace>(piece.solid, toDir(frame.normal));
+        } catch (const Standard_Failure&) {
+          // No faces to cut one by one: every plane of this solid goes to the section.
+        }
     }
   });
   // Batches of up to 16 planes (larger ones gained nothing on screw.step), at least four

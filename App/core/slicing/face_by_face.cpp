@@ -11,6 +11,7 @@
 #include <BRep_Tool.hxx>
 #include <ElCLib.hxx>
 #include <ElSLib.hxx>
+#include <Geom_BSplineCurve.hxx>
 #include <Geom_Circle.hxx>
 #include <Geom_Ellipse.hxx>
 #include <Geom_Hyperbola.hxx>
@@ -226,7 +227,7 @@ TopAbs_State classify(const TopoDS_Face& face, const BRepAdaptor_Surface& s, con
   }
   if (s.IsUPeriodic()) u = ElCLib::InPeriod(u, uv[0], uv[0] + s.UPeriod());
   if (s.IsVPeriodic()) v = ElCLib::InPeriod(v, uv[2], uv[2] + s.VPeriod());
-  const BRepClass_FaceClassifier classifier(const_cast<TopoDS_Face&>(face), gp_Pnt2d(u, v), Precision::PConfusion());
+  const BRepClass_FaceClassifier classifier(face, gp_Pnt2d(u, v), Precision::PConfusion());
   return classifier.State();
 }
 
@@ -258,8 +259,11 @@ TopoDS_Edge piece(const Curve& c, const End& a, double tb, const End& b) {
 bool solvedBy(const BRepAdaptor_Surface& s, const gp_Dir& n) {
   const GeomAbs_SurfaceType type = s.GetType();
   if (type == GeomAbs_Torus) {
-    const gp_Dir axis = s.Torus().Axis().Direction();
-    return axis.IsParallel(n, Precision::Angular()) || axis.IsNormal(n, Precision::Angular());
+    // IntAna solves a torus cut across only when its tube does not reach the axis (R > r).
+    const gp_Torus torus = s.Torus();
+    const gp_Dir axis = torus.Axis().Direction();
+    return (axis.IsParallel(n, Precision::Angular()) && torus.MajorRadius() > torus.MinorRadius()) ||
+           axis.IsNormal(n, Precision::Angular());
   }
   return type == GeomAbs_Plane || type == GeomAbs_Cylinder || type == GeomAbs_Cone || type == GeomAbs_Sphere;
 }
@@ -325,7 +329,7 @@ Handle(TopTools_HSequenceOfShape) FaceByFace::edges(const gp_Pln& plane) const t
         for (size_t k = 0; k < curves.size(); ++k) {
           const auto [t, distance] = project(curves[k], p);
           // 10 nm more than the tolerances say: edges of real files stray from their faces
-          // by up to 1 µm where both claim 0.1 µm (occ/Bottom.brep).
+          // by up to 1 nm where both claim 0.1 nm (occ/Bottom.brep).
           if (distance <= 2 * (edges_[e].tolerance + faceTolerance + curves[k].tolerance) + 1e-5)
             ends[k].push_back({t, vertex}), on = true;
         }
@@ -358,7 +362,17 @@ Handle(TopTools_HSequenceOfShape) FaceByFace::edges(const gp_Pln& plane) const t
         if (tb - a.t <= 1e-9 * (std::abs(period) + 1)) return nullptr;  // two crossings at one point
         const TopAbs_State state = classify(f.face, s, f.uv, c.curve->Value((a.t + tb) / 2));
         if (state == TopAbs_ON) return nullptr;
-        if (state == TopAbs_IN) out->Append(piece(c, a, tb, b));
+        if (state != TopAbs_IN) continue;
+        if (tb > c.last && c.curve->IsKind(STANDARD_TYPE(Geom_BSplineCurve))) {
+          // A torus's loop: an edge past the end of a periodic B-spline's parameters made
+          // the exact patches' Booleans leave a patch in six faces (a torus cut along its
+          // axis), so the piece is split where the loop closes. Conics keep one edge.
+          const End seam{c.first, vertexAt(c.curve->Value(c.first), Precision::Confusion())};
+          out->Append(piece(c, a, c.last, End{c.last, seam.vertex}));
+          out->Append(piece(c, seam, b.t, b));
+        } else {
+          out->Append(piece(c, a, tb, b));
+        }
       }
     }
   }

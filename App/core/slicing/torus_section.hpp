@@ -17,7 +17,7 @@ namespace sliceform {
 
 struct TorusSection {
   std::vector<Handle(Geom_BSplineCurve)> loops;  // each over [0, 2π), none where the plane misses
-  double tolerance = 0;                          // mm, the loops' largest distance from the exact curve
+  double tolerance = 0;  // mm, the loops' largest distance from the exact curve, halfway between points
 };
 
 // nullopt where the plane is not along the torus's axis, or would need a guess: tangent to
