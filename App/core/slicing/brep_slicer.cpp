@@ -161,7 +161,8 @@ std::vector<ExactSlice> sliceBatch(const std::vector<Piece>& pieces, const Slice
       }
       // A plane's route is the last one any of its solids needed.
       for (size_t i = 0; i < at.size(); ++i)
-        if (curves[i]) made[i] = curves[i]->faces, routes[meeting[i]] = std::max(routes[meeting[i]], curves[i]->route);
+        if (curves[i])
+          made[i] = curves[i]->faces, routes[meeting[i]] = std::max(routes[meeting[i]], curves[i]->route);
     }
     std::vector<double> rest;
     for (size_t i = 0; i < at.size(); ++i)
@@ -227,7 +228,8 @@ std::vector<ExactSlice> sliceBrep(const TopoDS_Shape& solid, const SliceFrame& f
   std::vector<Piece> solids;
   for (TopExp_Explorer it(solid, TopAbs_SOLID); it.More(); it.Next())
     if (TopExp_Explorer(it.Current(), TopAbs_FACE).More()) solids.push_back({it.Current(), 0, 0, nullptr});
-  if (solids.empty() && !TopExp_Explorer(solid, TopAbs_SOLID).More()) solids.push_back({solid, 0, 0, nullptr});
+  if (solids.empty() && !TopExp_Explorer(solid, TopAbs_SOLID).More())
+    solids.push_back({solid, 0, 0, nullptr});
   occtGuard("measuring the solids", [&] {
     for (Piece& piece : solids) {
       Bnd_Box own;

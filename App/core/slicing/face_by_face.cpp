@@ -11,13 +11,13 @@
 #include <BRep_Tool.hxx>
 #include <ElCLib.hxx>
 #include <ElSLib.hxx>
+#include <GeomAPI_ProjectPointOnCurve.hxx>
 #include <Geom_BSplineCurve.hxx>
 #include <Geom_Circle.hxx>
 #include <Geom_Ellipse.hxx>
 #include <Geom_Hyperbola.hxx>
 #include <Geom_Line.hxx>
 #include <Geom_Parabola.hxx>
-#include <GeomAPI_ProjectPointOnCurve.hxx>
 #include <IntAna_QuadQuadGeo.hxx>
 #include <Standard_Failure.hxx>
 #include <TopExp.hxx>
@@ -52,7 +52,8 @@ std::pair<double, double> along(const Bnd_Box& box, const gp_Dir& n) {
 
 // Where the plane n·p = d crosses an edge, appended to `out`; false where the route is
 // unsure: an end of the edge on the plane (a vertex of the solid), a tangent touch.
-bool crossings(const TopoDS_Edge& edge, double tolerance, const gp_Dir& n, double d, std::vector<gp_Pnt>& out) {
+bool crossings(const TopoDS_Edge& edge, double tolerance, const gp_Dir& n, double d,
+               std::vector<gp_Pnt>& out) {
   const BRepAdaptor_Curve c(edge);
   const double t0 = c.FirstParameter(), t1 = c.LastParameter();
   const auto f = [&](double t) { return n.XYZ().Dot(c.Value(t).XYZ()) - d; };
@@ -91,8 +92,10 @@ bool crossings(const TopoDS_Edge& edge, double tolerance, const gp_Dir& n, doubl
       double lo = ta, hi = tb, flo = fa;
       for (int k = 0; k < 100 && hi - lo > 1e-15 * (std::abs(lo) + 1); ++k) {
         const double mid = (lo + hi) / 2, fm = f(mid);
-        if ((fm < 0) == (flo < 0)) lo = mid, flo = fm;
-        else hi = mid;
+        if ((fm < 0) == (flo < 0))
+          lo = mid, flo = fm;
+        else
+          hi = mid;
       }
       out.push_back(c.Value((lo + hi) / 2));
     }
@@ -124,28 +127,41 @@ void boundTo(const Bnd_Box& box, Curve& c) {
     c.first = -t, c.last = t;
   } else if (auto hyperbola = Handle(Geom_Hyperbola)::DownCast(c.curve)) {
     // |P(t) - P(0)| >= a (cosh t - 1).
-    const double t = std::acosh((hyperbola->Location().Distance(centre) + reach + 1) / hyperbola->MajorRadius() + 1);
+    const double t =
+        std::acosh((hyperbola->Location().Distance(centre) + reach + 1) / hyperbola->MajorRadius() + 1);
     c.first = -t, c.last = t;
   }
 }
 
 // The curves where the plane cuts the surface of `face`; false where unsure.
-bool surfaceCurves(const BRepAdaptor_Surface& s, const gp_Pln& plane, const Bnd_Box& box, std::vector<Curve>& out) {
+bool surfaceCurves(const BRepAdaptor_Surface& s, const gp_Pln& plane, const Bnd_Box& box,
+                   std::vector<Curve>& out) {
   const double angular = Precision::Angular(), confusion = Precision::Confusion();
   IntAna_QuadQuadGeo q;
   switch (s.GetType()) {
-    case GeomAbs_Plane: q.Perform(plane, s.Plane(), angular, confusion); break;
-    case GeomAbs_Cylinder: q.Perform(plane, s.Cylinder(), angular, confusion); break;
-    case GeomAbs_Cone: q.Perform(plane, s.Cone(), angular, confusion); break;
-    case GeomAbs_Sphere: q.Perform(plane, s.Sphere()); break;
-    case GeomAbs_Torus: q.Perform(plane, s.Torus(), confusion); break;
-    default: break;
+    case GeomAbs_Plane:
+      q.Perform(plane, s.Plane(), angular, confusion);
+      break;
+    case GeomAbs_Cylinder:
+      q.Perform(plane, s.Cylinder(), angular, confusion);
+      break;
+    case GeomAbs_Cone:
+      q.Perform(plane, s.Cone(), angular, confusion);
+      break;
+    case GeomAbs_Sphere:
+      q.Perform(plane, s.Sphere());
+      break;
+    case GeomAbs_Torus:
+      q.Perform(plane, s.Torus(), confusion);
+      break;
+    default:
+      break;
   }
   // A torus along the plane: its loops (slicing/torus_section.hpp).
   if (s.GetType() == GeomAbs_Torus && (!q.IsDone() || q.TypeInter() == IntAna_NoGeometricSolution)) {
     const std::optional<TorusSection> section = torusSection(s.Torus(), plane);
     if (!section) return false;
-    for (const Handle(Geom_BSplineCurve)& loop : section->loops) {
+    for (const Handle(Geom_BSplineCurve) & loop : section->loops) {
       Curve c;
       c.curve = loop;
       c.first = loop->FirstParameter(), c.last = loop->LastParameter();
@@ -170,12 +186,23 @@ bool surfaceCurves(const BRepAdaptor_Surface& s, const gp_Pln& plane, const Bnd_
     c.periodic = type == IntAna_Circle || type == IntAna_Ellipse;
     c.first = 0, c.last = kTwoPi;
     switch (type) {
-      case IntAna_Line: c.curve = new Geom_Line(q.Line(i)); break;
-      case IntAna_Circle: c.curve = new Geom_Circle(q.Circle(i)); break;
-      case IntAna_Ellipse: c.curve = new Geom_Ellipse(q.Ellipse(i)); break;
-      case IntAna_Parabola: c.curve = new Geom_Parabola(q.Parabola(i)); break;
-      case IntAna_Hyperbola: c.curve = new Geom_Hyperbola(q.Hyperbola(i)); break;
-      default: return false;  // a point, the plane itself
+      case IntAna_Line:
+        c.curve = new Geom_Line(q.Line(i));
+        break;
+      case IntAna_Circle:
+        c.curve = new Geom_Circle(q.Circle(i));
+        break;
+      case IntAna_Ellipse:
+        c.curve = new Geom_Ellipse(q.Ellipse(i));
+        break;
+      case IntAna_Parabola:
+        c.curve = new Geom_Parabola(q.Parabola(i));
+        break;
+      case IntAna_Hyperbola:
+        c.curve = new Geom_Hyperbola(q.Hyperbola(i));
+        break;
+      default:
+        return false;  // a point, the plane itself
     }
     if (!c.periodic) boundTo(box, c);
     out.push_back(c);
@@ -186,11 +213,16 @@ bool surfaceCurves(const BRepAdaptor_Surface& s, const gp_Pln& plane, const Bnd_
 // The parameter of `p` on `c` and its distance from it.
 std::pair<double, double> project(const Curve& c, const gp_Pnt& p) {
   double t;
-  if (auto line = Handle(Geom_Line)::DownCast(c.curve)) t = ElCLib::Parameter(line->Lin(), p);
-  else if (auto circle = Handle(Geom_Circle)::DownCast(c.curve)) t = ElCLib::Parameter(circle->Circ(), p);
-  else if (auto ellipse = Handle(Geom_Ellipse)::DownCast(c.curve)) t = ElCLib::Parameter(ellipse->Elips(), p);
-  else if (auto parabola = Handle(Geom_Parabola)::DownCast(c.curve)) t = ElCLib::Parameter(parabola->Parab(), p);
-  else if (auto hyperbola = Handle(Geom_Hyperbola)::DownCast(c.curve)) t = ElCLib::Parameter(hyperbola->Hypr(), p);
+  if (auto line = Handle(Geom_Line)::DownCast(c.curve))
+    t = ElCLib::Parameter(line->Lin(), p);
+  else if (auto circle = Handle(Geom_Circle)::DownCast(c.curve))
+    t = ElCLib::Parameter(circle->Circ(), p);
+  else if (auto ellipse = Handle(Geom_Ellipse)::DownCast(c.curve))
+    t = ElCLib::Parameter(ellipse->Elips(), p);
+  else if (auto parabola = Handle(Geom_Parabola)::DownCast(c.curve))
+    t = ElCLib::Parameter(parabola->Parab(), p);
+  else if (auto hyperbola = Handle(Geom_Hyperbola)::DownCast(c.curve))
+    t = ElCLib::Parameter(hyperbola->Hypr(), p);
   else {
     // A torus's loop: closed, so the projection has a minimum inside it.
     GeomAPI_ProjectPointOnCurve projection(p, c.curve, c.first, c.last);
@@ -216,15 +248,27 @@ void torusParameters(const gp_Torus& torus, const gp_Pnt& p, double& u, double& 
 }
 
 // Where a point of the surface lies on the face.
-TopAbs_State classify(const TopoDS_Face& face, const BRepAdaptor_Surface& s, const double uv[4], const gp_Pnt& p) {
+TopAbs_State classify(const TopoDS_Face& face, const BRepAdaptor_Surface& s, const double uv[4],
+                      const gp_Pnt& p) {
   double u = 0, v = 0;
   switch (s.GetType()) {
-    case GeomAbs_Plane: ElSLib::Parameters(s.Plane(), p, u, v); break;
-    case GeomAbs_Cylinder: ElSLib::Parameters(s.Cylinder(), p, u, v); break;
-    case GeomAbs_Cone: ElSLib::Parameters(s.Cone(), p, u, v); break;
-    case GeomAbs_Sphere: ElSLib::Parameters(s.Sphere(), p, u, v); break;
-    case GeomAbs_Torus: torusParameters(s.Torus(), p, u, v); break;
-    default: return TopAbs_ON;  // no curves are made on other surfaces
+    case GeomAbs_Plane:
+      ElSLib::Parameters(s.Plane(), p, u, v);
+      break;
+    case GeomAbs_Cylinder:
+      ElSLib::Parameters(s.Cylinder(), p, u, v);
+      break;
+    case GeomAbs_Cone:
+      ElSLib::Parameters(s.Cone(), p, u, v);
+      break;
+    case GeomAbs_Sphere:
+      ElSLib::Parameters(s.Sphere(), p, u, v);
+      break;
+    case GeomAbs_Torus:
+      torusParameters(s.Torus(), p, u, v);
+      break;
+    default:
+      return TopAbs_ON;  // no curves are made on other surfaces
   }
   if (s.IsUPeriodic()) u = ElCLib::InPeriod(u, uv[0], uv[0] + s.UPeriod());
   if (s.IsVPeriodic()) v = ElCLib::InPeriod(v, uv[2], uv[2] + s.VPeriod());

@@ -166,7 +166,8 @@ std::vector<std::optional<SectionFaces>> sectionFaces(const TopoDS_Shape& solid,
     std::vector<Loop> loops;
     TopoDS_Compound faces;
     builder.MakeCompound(faces);
-    if (!edges.IsNull() && loopsOf(edges, frame, deflection, loops) && facesOf(loops, planes[k], builder, faces))
+    if (!edges.IsNull() && loopsOf(edges, frame, deflection, loops) &&
+        facesOf(loops, planes[k], builder, faces))
       out[k] = SectionFaces{faces, SectionRoute::FaceByFace};
     else
       rest.push_back(k);

@@ -77,7 +77,8 @@ std::optional<TorusSection> torusSection(const gp_Torus& torus, const gp_Pln& pl
   std::vector<std::function<gp_Pnt(double)>> loops;
   if (away < big - small) {
     // Two loops, one each side of the axis, each round the whole tube.
-    for (const double side : {1.0, -1.0}) loops.push_back([=](double t) { return point(side * across(t), t); });
+    for (const double side : {1.0, -1.0})
+      loops.push_back([=](double t) { return point(side * across(t), t); });
   } else {
     loops.push_back(loop(0, std::acos((away - big) / small)));  // rho >= |delta|
     // A spindle torus's inner part, past the axis, rho <= -|delta|.
@@ -85,7 +86,8 @@ std::optional<TorusSection> torusSection(const gp_Torus& torus, const gp_Pln& pl
   }
   for (const auto& at : loops) {
     std::pair<Handle(Geom_BSplineCurve), double> fit{nullptr, HUGE_VAL};
-    for (int count = kFewest; count <= kMost && fit.second > kTolerance; count *= 2) fit = interpolate(at, count);
+    for (int count = kFewest; count <= kMost && fit.second > kTolerance; count *= 2)
+      fit = interpolate(at, count);
     if (fit.second > kTolerance) return std::nullopt;
     out.loops.push_back(fit.first);
     out.tolerance = std::max(out.tolerance, fit.second);
