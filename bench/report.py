@@ -52,11 +52,41 @@ def markdown(r):
         stages = list(r["models"][models[0]]["stages_s"])
         for s in stages:
             out.append("| %s | %s |" % (s, " | ".join(f(r["models"][p]["stages_s"].get(s), 1000, 0) for p in models)))
+    if "freecad_edits" in r:
+        out += edits_md(r["freecad_edits"], r["repeat"])
     if "scaling" in r:
         out += scaling_md(r["scaling"])
     if "stages_benchmark" in r:
         out += stages_md(r["stages_benchmark"])
     return "\n".join(out) + "\n"
+
+
+EDIT_PARTS = ["sliceform", "patches", "sheet drawings", "TechDraw views", "other"]
+
+
+def edits_md(e, repeat):
+    if "error" in e:
+        return ["", "FreeCAD edits: " + e["error"]]
+    out = ["", "## FreeCAD edit", "",
+           "FreeCAD %s, `freecadcmd` (bench/fc_edit.py): a property set in a transaction and the document "
+           "recomputed, as the property editor does; median of %d edits, each to a value not used before. "
+           "s: the set and the recompute, what the user waits for (FreeCAD 0.20's TechDraw draws the sheets "
+           "inside it); drawn s: until every sheet view is drawn; then the recompute's seconds by kind of "
+           "object. Radius: the source's cylinder." % (e.get("freecad", "?"), repeat), "",
+           "| model, directions | patches | edit | s | drawn s | " + " | ".join(EDIT_PARTS) + " |",
+           "|---|---:|---|---:|---:|" + "---:|" * len(EDIT_PARTS)]
+    for row, d in e.items():
+        if row == "freecad":
+            continue
+        if "error" in d:
+            out.append("| %s | | %s | | | %s|" % (name(row), d["error"].replace("|", "/"), "| " * len(EDIT_PARTS)))
+            continue
+        out.append("| %s | %d | create | %s | | %s|" % (name(row), d["patches"], f(d["create_s"]), "| " * len(EDIT_PARTS)))
+        for prop, x in d["edits"].items():
+            out.append("| | | %s%s | %s | %s | %s |" % (
+                prop, "" if x["valid"] else " (invalid)", f(x["recompute_s"]), f(x["drawn_s"]),
+                " | ".join(f(x["parts_s"].get(k)) for k in EDIT_PARTS)))
+    return out
 
 
 def scaling_md(s):
@@ -144,6 +174,10 @@ def missing(r):
     for d in r.get("scaling", {}).get("by_triangles", []) + r.get("scaling", {}).get("by_slices", []):
         if d["ok"] != d["runs"] or d["wall_s"] is None:
             bad.append("scaling run failed: %s" % d["errors"])
+    edits = r.get("freecad_edits", {})
+    if "error" in edits:
+        bad.append("FreeCAD edits: " + edits["error"])
+    bad += ["FreeCAD edits, %s: %s" % (row, d["error"]) for row, d in edits.items() if row != "freecad" and "error" in d]
     if "error" in r.get("stages_benchmark", {}):
         bad.append(r["stages_benchmark"]["error"])
     return bad

@@ -116,6 +116,23 @@ def freecad_reference(models, n, size, repeat, tmp):
     return json.load(open(out)) if os.path.exists(out) else {m: {"error": "freecadcmd failed"} for m in models}
 
 
+def freecad_edits(meshes, repeat, build, tmp):
+    """bench/fc_edit.py in freecadcmd, the workbench installed from BUILD into a throwaway HOME
+    (the installed package's, if BUILD was not made with CMake)."""
+    job, out = os.path.join(tmp, "fc_edit_job.json"), os.path.join(tmp, "fc_edit_out.json")
+    json.dump({"meshes": meshes, "repeat": repeat, "directions": ["given", "auto"]}, open(job, "w"))
+    home = os.path.join(tmp, "edit-home")
+    env = dict(os.environ, HOME=home, XDG_DATA_HOME=os.path.join(home, ".local", "share"),
+               XDG_CONFIG_HOME=os.path.join(home, ".config"), SLICEFORM_FC_JOB=job, SLICEFORM_FC_OUT=out)
+    if os.path.exists(os.path.join(build, "cmake_install.cmake")):
+        subprocess.run(["cmake", "--install", build, "--prefix",
+                        os.path.join(home, ".local", "share", "FreeCAD", "Mod", "Sliceform")], capture_output=True)
+    p = subprocess.run(["freecadcmd", os.path.join(HERE, "fc_edit.py")], env=env, capture_output=True, text=True)
+    if not os.path.exists(out):
+        return {"error": "freecadcmd exited %d: %s" % (p.returncode, p.stderr.strip()[-300:])}
+    return json.load(open(out))
+
+
 def slope(xs, ys):
     """Least-squares slope of log y against log x."""
     pts = [(math.log(x), math.log(y)) for x, y in zip(xs, ys) if x and y]
@@ -187,8 +204,12 @@ def main():
     ap.add_argument("--out", default=os.path.join(HERE, "out"))
     ap.add_argument("--cli", default=os.path.join(ROOT, "build", "App", "cli", "sliceform"))
     ap.add_argument("--stages", metavar="BUILD_DIR", help="also run BUILD_DIR/bench/stages_benchmark")
+    ap.add_argument("--build", default=os.path.join(ROOT, "build"),
+                    help="the build whose workbench the FreeCAD edits use (default: build/)")
+    ap.add_argument("--edit-meshes", nargs="*", help="meshes for the FreeCAD edit rows (default: fandisk.obj "
+                    "from ../shared/models, else OCCT's sh1.stl), besides a box minus a cylinder")
     ap.add_argument("--scaling-model", help="default: spot.obj, else bunny-lowres.obj, else OCCT's sh1.stl")
-    ap.add_argument("--no-freecad", action="store_true")
+    ap.add_argument("--no-freecad", action="store_true", help="no FreeCAD sections or edits")
     ap.add_argument("--no-scaling", action="store_true")
     ap.add_argument("--smoke", action="store_true", help="one icosphere run at 32 slices; exit 1 on a failure")
     a = ap.parse_args()
@@ -223,6 +244,11 @@ def main():
     if not a.no_freecad:
         for m, fc in freecad_reference(a.models, a.slices, a.size, a.repeat, tmp).items():
             result["models"][m]["freecad"] = fc
+    if not a.no_freecad:
+        edit_meshes = a.edit_meshes if a.edit_meshes is not None else [
+            next(p for p in (os.path.join(SHARED, "fandisk.obj"), OCCT + "/stl/sh1.stl") if os.path.exists(p))]
+        print("FreeCAD edits", file=sys.stderr)
+        result["freecad_edits"] = freecad_edits([os.path.abspath(m) for m in edit_meshes], a.repeat, a.build, tmp)
     if not a.no_scaling:
         model = a.scaling_model or next((p for p in (os.path.join(SHARED, "spot.obj"),
                                                        os.path.join(SHARED, "bunny-lowres.obj"))

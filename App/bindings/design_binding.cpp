@@ -112,12 +112,47 @@ Model sourceModel(const py::dict& source) {
   throw Error(ErrorKind::BadInput, name + ": the source holds neither a shape nor a mesh");
 }
 
-// What Python holds: the sized model, the parameters and the design made from them.
+// What Python holds: the sized model (shared with the designs made again from this one),
+// how it was sized, the parameters and the design made from them.
 struct PyDesign {
-  Model model;
+  std::shared_ptr<const Model> model;
+  double size = 0, height = 0;
   DesignParams params;
   Design design;
 };
+
+// The stages run without the GIL; the progress callback takes it back for its call. It
+// refers to `progress`, which must outlive it (no reference count is touched without the GIL).
+Progress progressOf(const py::object& progress) {
+  if (progress.is_none()) return {};
+  return [&progress](const char* stage) {
+    py::gil_scoped_acquire gil;
+    if (!progress(stage).cast<bool>()) throw Error(ErrorKind::Cancelled, "cancelled by the user");
+  };
+}
+
+// Designs `run` on `model`; `earlier`, a design of the same model, lends its first stages.
+std::shared_ptr<PyDesign> designed(std::shared_ptr<const Model> model, const Run& run, const py::object& progress,
+                                   const PyDesign* earlier) {
+  auto result = std::make_shared<PyDesign>();
+  result->model = std::move(model);
+  result->size = run.size;
+  result->height = run.height;
+  result->params = run.params;
+  const Progress report = progressOf(progress);
+  py::gil_scoped_release release;
+  if (run.autoDirections) {
+    DirectionChoice choice;
+    result->design = designInBestFrame(*result->model, result->params, choice, report, {}, nullptr,
+                                       earlier ? &earlier->design : nullptr);
+    // As if given: the report's parameters and everything after carry them.
+    result->params.arrangement.u = choice.trials[choice.chosen].u;
+    result->params.arrangement.v = choice.trials[choice.chosen].v;
+  } else {
+    result->design = runDesign(*result->model, result->params, report, {}, nullptr, earlier ? &earlier->design : nullptr);
+  }
+  return result;
+}
 
 py::dict element(const CutElement& e) {
   py::dict d;
@@ -218,7 +253,7 @@ py::dict sheets(const PyDesign& self) {
 void bindDesign(py::module_& m) {
   py::class_<PyDesign, std::shared_ptr<PyDesign>>(m, "Design", "A designed sliceform (see design())")
       .def(
-          "report_json", [](const PyDesign& d) { return reportJson(d.model, d.params, d.design).dump(1); },
+          "report_json", [](const PyDesign& d) { return reportJson(*d.model, d.params, d.design).dump(1); },
           "report.json's text (docs/report-format.md)")
       .def(
           "timings",
@@ -272,9 +307,26 @@ void bindDesign(py::module_& m) {
           "The same design laid out on other sheets: `sheet_params` holds sheet, margin, spacing and "
           "rotate as design() takes them (a sheet or margin edit needs no new design)")
       .def(
+          "redesigned",
+          [](const PyDesign& d, const py::dict& params, const py::object& progress) {
+            const Run run = readParams(params);
+            const bool sized = run.height != 0 ? run.height == d.height && !run.autoDirections &&
+                                                     cross(run.params.arrangement.u, run.params.arrangement.v) ==
+                                                         cross(d.params.arrangement.u, d.params.arrangement.v)
+                                               : d.height == 0 && run.size == d.size;
+            if (!sized)
+              throw Error(ErrorKind::BadParameter,
+                          "redesigned() takes the size and height the design was made at: a new size needs design()");
+            return designed(d.model, run, progress, &d);
+          },
+          py::arg("params"), py::arg("progress") = py::none(),
+          "The same source designed with other parameters (as design() takes them, the same size and "
+          "height): the stages whose inputs did not change are taken from this design, as a FreeCAD "
+          "edit of Thickness leaves the slices, Reeb graphs and cylinders as they were")
+      .def(
           "write_files",
           [](const PyDesign& d, const std::string& folder, double theta) {
-            const DesignFiles files = writeDesignFiles(d.model, d.params, d.design, folder, theta);
+            const DesignFiles files = writeDesignFiles(*d.model, d.params, d.design, folder, theta);
             py::dict out;
             out["written"] = files.written;
             out["removed"] = files.removed;
@@ -322,8 +374,7 @@ void bindDesign(py::module_& m) {
   m.def(
       "design",
       [](const py::dict& source, const py::dict& params, const py::object& progress) {
-        Run run = readParams(params);
-        auto result = std::make_shared<PyDesign>();
+        const Run run = readParams(params);
         Model model = sourceModel(source);
         if (run.height != 0) {
           model =
@@ -331,26 +382,7 @@ void bindDesign(py::module_& m) {
         } else if (run.size != 0) {
           model = scaledToSize(model, run.size);
         }
-        result->model = std::move(model);
-        result->params = run.params;
-        // The stages run without the GIL; the progress callback takes it back for its call.
-        Progress report;
-        if (!progress.is_none())
-          report = [&progress](const char* stage) {
-            py::gil_scoped_acquire gil;
-            if (!progress(stage).cast<bool>()) throw Error(ErrorKind::Cancelled, "cancelled by the user");
-          };
-        py::gil_scoped_release release;
-        if (run.autoDirections) {
-          DirectionChoice choice;
-          result->design = designInBestFrame(result->model, result->params, choice, report);
-          // As if given: the report's parameters and everything after carry them.
-          result->params.arrangement.u = choice.trials[choice.chosen].u;
-          result->params.arrangement.v = choice.trials[choice.chosen].v;
-        } else {
-          result->design = runDesign(result->model, result->params, report);
-        }
-        return result;
+        return designed(std::make_shared<const Model>(std::move(model)), run, progress, nullptr);
       },
       py::arg("source"), py::arg("params") = py::dict(), py::arg("progress") = py::none(),
       "Designs a sliceform. `source`: {'brep': BREP string} or {'points': [(x, y, z)], "

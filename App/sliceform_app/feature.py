@@ -159,11 +159,15 @@ def restore_traceback():
 SHEET_KEYS = ("sheet", "margin", "spacing", "rotate")
 
 
-def _key(source, params):
-    digest = hashlib.sha1(json.dumps(params, sort_keys=True).encode())
-    digest.update(source.get("brep", "").encode())
+def _source_key(source):
+    """A digest of what the core is given for the source (sized already)."""
+    digest = hashlib.sha1(source.get("brep", "").encode())
     digest.update(repr((source.get("points"), source.get("triangles"))).encode())
     return digest.hexdigest()
+
+
+def _key(source_key, params):
+    return hashlib.sha1((json.dumps(params, sort_keys=True) + source_key).encode()).hexdigest()
 
 
 def _mm(value):
@@ -237,6 +241,7 @@ class Sliceform:
     def _forget(self):
         self.designs = {}  # key -> (design, report, flat patches, sheets)
         self.unlaid = {}  # key -> the key of its inputs but the sheet's
+        self.sources = {}  # key -> the key of its source
         self.design, self.key, self.report = None, None, None
 
     def onDocumentRestored(self, obj):
@@ -266,24 +271,32 @@ class Sliceform:
         params = parameters.core_params(obj)
         size = params.pop("size", 0.0)
         source = source_of(obj.Source, size)
-        return source, params, _key(source, dict(params, size=size))
+        source_key = _source_key(source)
+        return source, params, source_key, _key(source_key, dict(params, size=size))
 
-    def _relaid(self, source, params, key):
-        """A design in memory whose inputs differ from these in the sheet only, laid out on
-        this sheet (a sheet, margin or spacing edit needs no new design); or None."""
-        unlaid = _key(source, {k: v for k, v in params.items() if k not in SHEET_KEYS})
-        self.unlaid[key] = unlaid
+    def _made_again(self, source, params, source_key, key, progress):
+        """The design for these inputs from one in memory of the same source: laid out again
+        if only the sheet differs (a sheet, margin or spacing edit needs no new design),
+        else designed again with the stages whose inputs did not change taken from it
+        (Design.redesigned); designed anew if none has this source."""
+        unlaid = _key(source_key, {k: v for k, v in params.items() if k not in SHEET_KEYS})
+        self.unlaid[key], self.sources[key] = unlaid, source_key
+        same_source = None
         for other, entry in self.designs.items():
             if self.unlaid.get(other) == unlaid:
                 return entry[0].relaid({k: params[k] for k in SHEET_KEYS if k in params})
-        return None
+            if self.sources.get(other) == source_key:
+                same_source = entry[0]
+        if same_source is not None:
+            return same_source.redesigned(params, progress)
+        return native().design(source, params, progress)
 
     def ensure_design(self, obj):
         """The design for the feature's source and properties as they are: the one in
         memory, or designed now (after a reopen, an Undo or a Cancel). Raises DesignError
         with the property names when it cannot be made."""
         try:
-            source, params, key = self._inputs(obj)
+            source, params, source_key, key = self._inputs(obj)
         except DesignError:
             raise
         except (ValueError, RuntimeError) as e:
@@ -293,7 +306,7 @@ class Sliceform:
         if key not in self.designs:
             progress = Progress()
             try:
-                design = self._relaid(source, params, key) or native().design(source, params, progress)
+                design = self._made_again(source, params, source_key, key, progress)
             except native().Error as e:
                 raise DesignError(parameters.property_message(str(e))) from None
             finally:
@@ -304,6 +317,7 @@ class Sliceform:
                 oldest = next(iter(self.designs))
                 self.designs.pop(oldest)
                 self.unlaid.pop(oldest, None)
+                self.sources.pop(oldest, None)
         self.key = key
         self.design, self.report = self.designs[key][:2]
         return self.design

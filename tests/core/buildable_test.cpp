@@ -18,8 +18,12 @@
 #include <gp_Trsf.hxx>
 
 #include <cmath>
+#include <functional>
+#include <vector>
 
+#include "output/report_json.hpp"
 #include "pipeline/design.hpp"
+#include "pipeline/directions.hpp"
 #include "test_support.hpp"
 
 namespace sliceform {
@@ -149,6 +153,55 @@ TEST(Buildable, MengerSpongeOnItsCornerEndsAndBuilds) {
   const Design d = runDesign(model, params);
   EXPECT_GT(d.patches.size(), 50u);
   expectBuildable(model, d, params);
+}
+
+// A FreeCAD edit designs the same model again with the design before it (runDesign's
+// `earlier`): the stages whose inputs are the same are taken from it, and the design is the
+// one made from nothing, byte for byte in report.json, whatever was edited.
+TEST(Buildable, DesigningAgainTakesOnlyStagesWhoseInputsAreTheSame) {
+  const Model model = modelFromMesh(modelFromShape(test::makeTorus(60, 20), "torus").mesh, "torus mesh");
+  DesignParams first;
+  first.arrangement.slices = 32;
+  const Design before = runDesign(model, first);
+  struct Edit {
+    const char* what;
+    std::function<void(DesignParams&)> apply;
+    int taken;  // slice, reeb, gca
+  };
+  const std::vector<Edit> edits = {
+      {"thickness", [](DesignParams& p) { p.slots.thickness = 0.5; }, 3},
+      {"clearance", [](DesignParams& p) { p.slots.clearance = 0.2; }, 3},
+      {"spacing the cylinders must keep", [](DesignParams& p) { p.arrangement.stabilize.minSpacing = 14; }, 2},
+      {"tauA", [](DesignParams& p) { p.arrangement.tauA = 0.2; }, 2},
+      {"tauM", [](DesignParams& p) { p.arrangement.tauM = 0.1; }, 1},
+      {"slices", [](DesignParams& p) { p.arrangement.slices = 36; }, 0},
+      {"directions", [](DesignParams& p) { p.arrangement.u = {0, 1, 0}, p.arrangement.v = {-1, 0, 0}; }, 0},
+  };
+  for (const Edit& e : edits) {
+    DesignParams params = first;
+    e.apply(params);
+    const Design again = runDesign(model, params, {}, {}, nullptr, &before);
+    const Design fresh = runDesign(model, params);
+    EXPECT_EQ(again.arrangement.stagesTaken, e.taken) << e.what;
+    EXPECT_EQ(fresh.arrangement.stagesTaken, 0) << e.what;
+    EXPECT_EQ(reportJson(model, params, again).dump(), reportJson(model, params, fresh).dump()) << e.what;
+  }
+  // With the directions chosen for the model: the full design in the frame chosen before
+  // takes its stages, and the design is the one made from nothing.
+  DesignParams thick = first;
+  thick.slots.thickness = 0.5;
+  DirectionChoice c0, c1, c2;
+  const Design autoBefore = designInBestFrame(model, first, c0);
+  const Design autoAgain = designInBestFrame(model, thick, c1, {}, {}, nullptr, &autoBefore);
+  const Design autoFresh = designInBestFrame(model, thick, c2);
+  ASSERT_EQ(c1.chosen, c0.chosen);  // the torus: the same frame at either thickness
+  EXPECT_EQ(autoAgain.arrangement.stagesTaken, 3);
+  thick.arrangement.u = c1.trials[c1.chosen].u, thick.arrangement.v = c1.trials[c1.chosen].v;
+  EXPECT_EQ(reportJson(model, thick, autoAgain).dump(), reportJson(model, thick, autoFresh).dump());
+  // The edits changed the design (else the comparison above says nothing).
+  DesignParams thicker = first;
+  thicker.slots.thickness = 0.5;
+  EXPECT_NE(reportJson(model, first, before).dump(), reportJson(model, thicker, runDesign(model, thicker)).dump());
 }
 
 }  // namespace

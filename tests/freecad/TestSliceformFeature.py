@@ -170,7 +170,8 @@ class TestSliceformFeature(unittest.TestCase):
     def test_sheet_edit_lays_out_the_same_design_again(self):
         """A sheet, margin or spacing edit reuses the design in memory and only nests it again
         (issue 17); the result is what a fresh design on that sheet gives. A Thickness edit
-        designs anew."""
+        designs again from the design in memory (its slices, Reeb graphs and cylinders), and
+        gives what a fresh design gives; a source edit designs anew."""
         import sliceform_native
         from sliceform_app import feature
 
@@ -188,13 +189,20 @@ class TestSliceformFeature(unittest.TestCase):
             self.assertEqual(calls, [])
             self.assertTrue(sliceform.isValid(), sliceform.getStatusString())
             relaid = json.loads(sliceform.Proxy.report_json(sliceform))
-            source, params, _ = sliceform.Proxy._inputs(sliceform)
+            source, params = sliceform.Proxy._inputs(sliceform)[:2]
             fresh = json.loads(design(source, params).report_json())
             self.assertEqual(relaid["sheets"]["name"], "A3")
             self.assertEqual(relaid["sheets"], fresh["sheets"])
             self.assertEqual([p["placement"] for p in relaid["patches"]], [p["placement"] for p in fresh["patches"]])
             self.assertEqual(sliceform.SheetCount, fresh["sheets"]["count"])
             self.edit("Edit Thickness", lambda: setattr(sliceform, "Thickness", 0.5))
+            self.assertEqual(calls, [])
+            self.assertTrue(sliceform.isValid(), sliceform.getStatusString())
+            source, params = sliceform.Proxy._inputs(sliceform)[:2]
+            self.assertEqual(params["thickness"], 0.5)
+            again = json.loads(sliceform.Proxy.report_json(sliceform))
+            self.assertEqual(again, json.loads(design(source, params).report_json()))
+            self.edit("Edit Length", lambda: setattr(box, "Length", 110))
             self.assertEqual(len(calls), 1)
         finally:
             sliceform_native.design = design

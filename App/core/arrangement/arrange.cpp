@@ -45,29 +45,52 @@ std::string mm(double value) {
 
 }  // namespace
 
-Arrangement arrange(const Model& model, const ArrangementParams& params) {
+Arrangement arrange(const Model& model, const ArrangementParams& params, const Arrangement* earlier) {
   checkParams(params);
   requireClosed(model);
   requireOneSolid(model);
   Arrangement a;
+  a.params = params;
   Stopwatch clock(a.timings);
-  const Vec3 w = cross(params.u, params.v);
-  a.u = sliceFamily(model, makeSliceFrame(params.u, w), params);
-  a.v = sliceFamily(model, makeSliceFrame(params.v, w), params);
+  const ArrangementParams* was = earlier ? &earlier->params : nullptr;
+  const bool sameSlices =
+      was && was->u == params.u && was->v == params.v && was->slices == params.slices && was->interval == params.interval;
+  if (sameSlices) {
+    a.stagesTaken = 1;
+    a.u = earlier->u;
+    a.v = earlier->v;
+  } else {
+    const Vec3 w = cross(params.u, params.v);
+    a.u = sliceFamily(model, makeSliceFrame(params.u, w), params);
+    a.v = sliceFamily(model, makeSliceFrame(params.v, w), params);
+  }
   clock.lap("slice");
 
-  a.reebU = buildReebGraph(a.u);
-  a.reebV = buildReebGraph(a.v);
-  simplifyReebGraph(a.reebU, params.tauM);
-  simplifyReebGraph(a.reebV, params.tauM);
+  const bool sameReeb = sameSlices && was->tauM == params.tauM;
+  if (sameReeb) {
+    a.stagesTaken = 2;
+    a.reebU = earlier->reebU;
+    a.reebV = earlier->reebV;
+  } else {
+    a.reebU = buildReebGraph(a.u);
+    a.reebV = buildReebGraph(a.v);
+    simplifyReebGraph(a.reebU, params.tauM);
+    simplifyReebGraph(a.reebV, params.tauM);
+  }
   clock.lap("reeb");
 
   // Neighbouring cylinders must be able to hold patches the spacing rule apart.
   const double spacing = a.minSpacing = minPatchSpacing(params.stabilize, params.hinges);
-  a.uCylinders =
-      approximateCylinders(a.reebU, Family::U, a.u.interval, params.tauA, slicesApart(spacing, a.u.interval));
-  a.vCylinders =
-      approximateCylinders(a.reebV, Family::V, a.v.interval, params.tauA, slicesApart(spacing, a.v.interval));
+  const int uApart = slicesApart(spacing, a.u.interval), vApart = slicesApart(spacing, a.v.interval);
+  if (sameReeb && was->tauA == params.tauA && slicesApart(earlier->minSpacing, a.u.interval) == uApart &&
+      slicesApart(earlier->minSpacing, a.v.interval) == vApart) {
+    a.stagesTaken = 3;
+    a.uCylinders = earlier->uCylinders;
+    a.vCylinders = earlier->vCylinders;
+  } else {
+    a.uCylinders = approximateCylinders(a.reebU, Family::U, a.u.interval, params.tauA, uApart);
+    a.vCylinders = approximateCylinders(a.reebV, Family::V, a.v.interval, params.tauA, vApart);
+  }
   clock.lap("gca");
 
   a.table = std::make_shared<const HingeTable>(a.u, a.v, a.uCylinders, a.vCylinders, params.hinges);

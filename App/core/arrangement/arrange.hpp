@@ -31,6 +31,7 @@ struct ArrangementParams {
 };
 
 struct Arrangement {
+  ArrangementParams params;  // what it was made from
   SliceSet u, v;
   ReebGraph reebU, reebV;
   std::vector<Cylinder> uCylinders, vCylinders;
@@ -40,6 +41,7 @@ struct Arrangement {
   Certificate certificate;
   Quality quality;
   std::vector<StageTime> timings;
+  int stagesTaken = 0;  // of slice, reeb and gca, how many were taken from an earlier arrangement
 
   // Family f's slice set and cylinders.
   const SliceSet& slices(Family f) const { return f == Family::U ? u : v; }
@@ -47,7 +49,11 @@ struct Arrangement {
 };
 
 // Throws BadParameter for directions that are not orthogonal or out-of-range values.
-Arrangement arrange(const Model& model, const ArrangementParams& params);
+// `earlier`: an arrangement of the same model (a FreeCAD edit designs again): the slice sets,
+// Reeb graphs and cylinders are taken from it where their inputs are the same (no later stage
+// changes them), as a Thickness edit leaves them unless the slices a patch spacing needs
+// change.
+Arrangement arrange(const Model& model, const ArrangementParams& params, const Arrangement* earlier = nullptr);
 
 // The certificate of a scaffold on its holding hinges.
 Certificate certifyScaffold(const Scaffold& scaffold);

@@ -23,7 +23,7 @@ auto timed(std::vector<StageTime>& timings, const char* stage, const Progress& p
 }  // namespace
 
 Design runDesign(const Model& model, DesignParams params, const Progress& progress,
-                 const PatchesReady& patchesReady, const Deadline* runDeadline) {
+                 const PatchesReady& patchesReady, const Deadline* runDeadline, const Design* earlier) {
   // Hinges must hold with the slot cut: the paper beside it is measured from its walls.
   checkSlotParams(params.slots);
   if (!(params.timeLimit >= 0))
@@ -34,7 +34,7 @@ Design runDesign(const Model& model, DesignParams params, const Progress& progre
   Design d;
   d.timeLimit = params.timeLimit;
   if (progress) progress("arrangement");
-  d.arrangement = arrange(model, params.arrangement);
+  d.arrangement = arrange(model, params.arrangement, earlier ? &earlier->arrangement : nullptr);
   d.timings = d.arrangement.timings;
   if (progress) progress("realization");  // grazes and the slot search: one stage to the user
   d.grazes = timed(d.timings, "grazes", {},

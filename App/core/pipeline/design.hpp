@@ -54,9 +54,11 @@ constexpr int kDesignStages = 6;
 using PatchesReady = std::function<void(const Design& design)>;
 
 // `deadline`: the run's, when it designs more than once (other frames); by default
-// params.timeLimit from now.
+// params.timeLimit from now. `earlier`: a design of the same model, whose first stages are
+// taken where their inputs are the same (arrange()).
 Design runDesign(const Model& model, DesignParams params, const Progress& progress = {},
-                 const PatchesReady& patchesReady = {}, const Deadline* deadline = nullptr);
+                 const PatchesReady& patchesReady = {}, const Deadline* deadline = nullptr,
+                 const Design* earlier = nullptr);
 
 // Why the design cannot be built, one clause per broken rule naming what helps; empty when
 // it can. The CLI's exit code and the FreeCAD feature's state both come from it.

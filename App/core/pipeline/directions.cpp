@@ -258,7 +258,7 @@ std::vector<FrameTrial> candidateFrames(const Model& model) {
 
 Design designInBestFrame(const Model& model, DesignParams params, DirectionChoice& choice,
                          const Progress& progress, const PatchesReady& patchesReady,
-                         const Deadline* runDeadline) {
+                         const Deadline* runDeadline, const Design* earlier) {
   const Deadline own(runDeadline ? 0 : params.timeLimit);
   const Deadline& deadline = runDeadline ? *runDeadline : own;
   const auto start = std::chrono::steady_clock::now();
@@ -301,7 +301,7 @@ Design designInBestFrame(const Model& model, DesignParams params, DirectionChoic
     DesignParams p = params;
     p.arrangement.u = t.u, p.arrangement.v = t.v;
     try {
-      Design d = runDesign(model, p, progress, {}, &deadline);
+      Design d = runDesign(model, p, progress, {}, &deadline, earlier);
       t.designed = true;
       t.buildable = designProblems(d).empty();
       t.quality = d.arrangement.quality;

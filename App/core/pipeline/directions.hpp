@@ -22,9 +22,11 @@ std::vector<FrameTrial> candidateFrames(const Model& model);
 bool standsUp(const Mesh& mesh, const Vec3& up);
 
 // The design in the best frame; `choice` gets every frame tried. `params.arrangement.u/v`
-// are ignored. Throws the best frame's error when no frame gives a design.
+// are ignored. Throws the best frame's error when no frame gives a design. `earlier`: a
+// design of the same model, whose first stages the full design takes where they match
+// (runDesign), as when a FreeCAD edit keeps the frame chosen before.
 Design designInBestFrame(const Model& model, DesignParams params, DirectionChoice& choice,
                          const Progress& progress = {}, const PatchesReady& patchesReady = {},
-                         const Deadline* deadline = nullptr);
+                         const Deadline* deadline = nullptr, const Design* earlier = nullptr);
 
 }  // namespace sliceform
