@@ -68,11 +68,11 @@ def edits_md(e, repeat):
     if "error" in e:
         return ["", "FreeCAD edits: " + e["error"]]
     out = ["", "## FreeCAD edit", "",
-           "FreeCAD %s, `freecadcmd` (bench/fc_edit.py): a property set in a transaction and the document "
-           "recomputed, as the property editor does; median of %d edits, each to a value not used before. "
-           "s: the set and the recompute, what the user waits for (FreeCAD 0.20's TechDraw draws the sheets "
-           "inside it); drawn s: until every sheet view is drawn; then the recompute's seconds by kind of "
-           "object. Radius: the source's cylinder." % (e.get("freecad", "?"), repeat), "",
+           "FreeCAD %s, `freecadcmd` (bench/fc_edit.py): a property set in a transaction, the document "
+           "recomputed and the transaction closed (the children synced), as the property editor does; median "
+           "of %d edits, each to a value not used before. s: all of that, what the user waits for (FreeCAD "
+           "0.20's TechDraw draws the sheets inside it); drawn s: until every sheet view is drawn; then the "
+           "recomputes' seconds by kind of object. Radius: the source's cylinder." % (e.get("freecad", "?"), repeat), "",
            "| model, directions | patches | edit | s | drawn s | " + " | ".join(EDIT_PARTS) + " |",
            "|---|---:|---|---:|---:|" + "---:|" * len(EDIT_PARTS)]
     for row, d in e.items():

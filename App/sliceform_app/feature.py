@@ -5,7 +5,9 @@ patch, a TechDraw page per sheet) link to it and build themselves from its desig
 lives in properties; the proxy keeps the last few designs in memory (never saved), so that
 a FoldAngle change re-poses the patches without designing again, and designs again on
 demand where a design is needed after a reopen (Export, the report)."""
+import array
 import hashlib
+import itertools
 import json
 
 import FreeCAD
@@ -160,9 +162,12 @@ SHEET_KEYS = ("sheet", "margin", "spacing", "rotate")
 
 
 def _source_key(source):
-    """A digest of what the core is given for the source (sized already)."""
+    """A digest of what the core is given for the source (sized already): the BREP's text,
+    or the mesh's coordinates and indices as machine numbers (repr took 13 ms on fandisk)."""
     digest = hashlib.sha1(source.get("brep", "").encode())
-    digest.update(repr((source.get("points"), source.get("triangles"))).encode())
+    if "points" in source:
+        digest.update(array.array("d", itertools.chain.from_iterable(source["points"])).tobytes())
+        digest.update(array.array("q", itertools.chain.from_iterable(source["triangles"])).tobytes())
     return digest.hexdigest()
 
 
