@@ -132,8 +132,8 @@ Progress progressOf(const py::object& progress) {
 }
 
 // Designs `run` on `model`; `earlier`, a design of the same model, lends its first stages.
-std::shared_ptr<PyDesign> designed(std::shared_ptr<const Model> model, const Run& run, const py::object& progress,
-                                   const PyDesign* earlier) {
+std::shared_ptr<PyDesign> designed(std::shared_ptr<const Model> model, const Run& run,
+                                   const py::object& progress, const PyDesign* earlier) {
   auto result = std::make_shared<PyDesign>();
   result->model = std::move(model);
   result->size = run.size;
@@ -149,7 +149,8 @@ std::shared_ptr<PyDesign> designed(std::shared_ptr<const Model> model, const Run
     result->params.arrangement.u = choice.trials[choice.chosen].u;
     result->params.arrangement.v = choice.trials[choice.chosen].v;
   } else {
-    result->design = runDesign(*result->model, result->params, report, {}, nullptr, earlier ? &earlier->design : nullptr);
+    result->design =
+        runDesign(*result->model, result->params, report, {}, nullptr, earlier ? &earlier->design : nullptr);
   }
   return result;
 }
@@ -310,13 +311,15 @@ void bindDesign(py::module_& m) {
           "redesigned",
           [](const PyDesign& d, const py::dict& params, const py::object& progress) {
             const Run run = readParams(params);
-            const bool sized = run.height != 0 ? run.height == d.height && !run.autoDirections &&
-                                                     cross(run.params.arrangement.u, run.params.arrangement.v) ==
-                                                         cross(d.params.arrangement.u, d.params.arrangement.v)
-                                               : d.height == 0 && run.size == d.size;
+            const bool sized = run.height != 0
+                                   ? run.height == d.height && !run.autoDirections &&
+                                         cross(run.params.arrangement.u, run.params.arrangement.v) ==
+                                             cross(d.params.arrangement.u, d.params.arrangement.v)
+                                   : d.height == 0 && run.size == d.size;
             if (!sized)
-              throw Error(ErrorKind::BadParameter,
-                          "redesigned() takes the size and height the design was made at: a new size needs design()");
+              throw Error(
+                  ErrorKind::BadParameter,
+                  "redesigned() takes the size and height the design was made at: a new size needs design()");
             return designed(d.model, run, progress, &d);
           },
           py::arg("params"), py::arg("progress") = py::none(),

@@ -171,11 +171,16 @@ TEST(Buildable, DesigningAgainTakesOnlyStagesWhoseInputsAreTheSame) {
   const std::vector<Edit> edits = {
       {"thickness", [](DesignParams& p) { p.slots.thickness = 0.5; }, 3},
       {"clearance", [](DesignParams& p) { p.slots.clearance = 0.2; }, 3},
-      {"spacing the cylinders must keep", [](DesignParams& p) { p.arrangement.stabilize.minSpacing = 14; }, 2},
+      {"spacing the cylinders must keep", [](DesignParams& p) { p.arrangement.stabilize.minSpacing = 14; },
+       2},
       {"tauA", [](DesignParams& p) { p.arrangement.tauA = 0.2; }, 2},
       {"tauM", [](DesignParams& p) { p.arrangement.tauM = 0.1; }, 1},
       {"slices", [](DesignParams& p) { p.arrangement.slices = 36; }, 0},
-      {"directions", [](DesignParams& p) { p.arrangement.u = {0, 1, 0}, p.arrangement.v = {-1, 0, 0}; }, 0},
+      {"directions",
+       [](DesignParams& p) {
+         p.arrangement.u = {0, 1, 0}, p.arrangement.v = {-1, 0, 0};
+       },
+       0},
   };
   for (const Edit& e : edits) {
     DesignParams params = first;
@@ -201,7 +206,8 @@ TEST(Buildable, DesigningAgainTakesOnlyStagesWhoseInputsAreTheSame) {
   // The edits changed the design (else the comparison above says nothing).
   DesignParams thicker = first;
   thicker.slots.thickness = 0.5;
-  EXPECT_NE(reportJson(model, first, before).dump(), reportJson(model, thicker, runDesign(model, thicker)).dump());
+  EXPECT_NE(reportJson(model, first, before).dump(),
+            reportJson(model, thicker, runDesign(model, thicker)).dump());
 }
 
 }  // namespace

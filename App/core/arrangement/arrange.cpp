@@ -53,8 +53,8 @@ Arrangement arrange(const Model& model, const ArrangementParams& params, const A
   a.params = params;
   Stopwatch clock(a.timings);
   const ArrangementParams* was = earlier ? &earlier->params : nullptr;
-  const bool sameSlices =
-      was && was->u == params.u && was->v == params.v && was->slices == params.slices && was->interval == params.interval;
+  const bool sameSlices = was && was->u == params.u && was->v == params.v && was->slices == params.slices &&
+                          was->interval == params.interval;
   if (sameSlices) {
     a.stagesTaken = 1;
     a.u = earlier->u;

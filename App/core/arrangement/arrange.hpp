@@ -53,7 +53,8 @@ struct Arrangement {
 // Reeb graphs and cylinders are taken from it where their inputs are the same (no later stage
 // changes them), as a Thickness edit leaves them unless the slices a patch spacing needs
 // change.
-Arrangement arrange(const Model& model, const ArrangementParams& params, const Arrangement* earlier = nullptr);
+Arrangement arrange(const Model& model, const ArrangementParams& params,
+                    const Arrangement* earlier = nullptr);
 
 // The certificate of a scaffold on its holding hinges.
 Certificate certifyScaffold(const Scaffold& scaffold);
