@@ -11,7 +11,9 @@ way TechDraw views depend on their source:
 - an *engraving* (Part::FeaturePython) per patch, linking the patch: its engraved strokes
   (id, partner labels, leaders) in sheet millimetres, in a view of its own drawn after the
   page's patch views, so that TechDraw's DXF puts them on a layer of their own
-  (`<patch>_Engrave`), apart from the cuts (a layer per patch view).
+  (`<patch>_Engrave`), apart from the cuts (a layer per patch view). A long engraving is in
+  several parts (`EngravingPart` 0, 1, ...), each with its view (`<patch>_2_Engrave`, ...):
+  TechDraw's face search costs the square of a view's edges (geometry.engraving_parts).
 
 Each child builds its geometry in its own execute() from the design the Sliceform's proxy
 holds in memory (designed again on demand, after a reopen). The feature itself never adds,
@@ -69,16 +71,21 @@ def pages_of(sliceform):
     return sorted(found, key=lambda o: o.SheetIndex)
 
 
+def engraving_parts_of(patch):
+    """The engraving children of a patch, by part."""
+    found = [o for o in patch.InList if _proxy_type(o) == "SliceformEngraving" and getattr(o, "Patch", None) == patch]
+    return sorted(found, key=lambda o: getattr(o, "EngravingPart", 0))
+
+
 def engraving_of(patch):
-    for o in patch.InList:
-        if _proxy_type(o) == "SliceformEngraving" and getattr(o, "Patch", None) == patch:
-            return o
-    return None
+    """The first (often the only) part of a patch's engraving."""
+    parts = engraving_parts_of(patch)
+    return parts[0] if parts else None
 
 
 def engravings_of(sliceform):
-    """The engraving children of a sliceform, by patch."""
-    return [e for e in map(engraving_of, patches_of(sliceform)) if e is not None]
+    """The engraving children of a sliceform, by patch and part."""
+    return [e for patch in patches_of(sliceform) for e in engraving_parts_of(patch)]
 
 
 def _sheet_engravings(sliceform):
@@ -124,7 +131,7 @@ def owned_objects(sliceform):
         out.append(engraving)
     patches = patches_of(sliceform)
     for patch in patches:
-        for drawing in (engraving_of(patch), sheet_patch_of(patch)):
+        for drawing in engraving_parts_of(patch) + [sheet_patch_of(patch)]:
             if drawing is not None:
                 out.extend(v for v in views_of(drawing) if v not in out)
                 out.append(drawing)
@@ -231,14 +238,17 @@ class SheetPatch(_Child):
 
 class Engraving(_Child):
     """What is engraved on one patch (its id, partner labels and leaders) as it lies on its
-    sheet, in sheet millimetres on the sheet's box (_on_sheet), for a view of its own. One
-    a patch, not one a sheet: TechDraw looks for faces among a view's edges at a cost that
-    grows with the square of their number, and a sheet's labels made its engraving view
-    take 80 % of an edit's recompute (docs/decisions.md)."""
+    sheet, in sheet millimetres on the sheet's box (_on_sheet), for a view of its own: part
+    EngravingPart of geometry.engraving_parts. One a patch, in parts of at most 100 edges,
+    not one a sheet: TechDraw looks for faces among a view's edges at a cost that grows with
+    the square of their number, and a sheet's labels made its engraving view take 80 % of an
+    edit's recompute (docs/decisions.md)."""
 
     Type = "SliceformEngraving"
     PROPERTIES = (
         ("App::PropertyLink", "Patch", "Engraving", QT_TRANSLATE_NOOP("App::Property", "The patch whose labels these are")),
+        ("App::PropertyInteger", "EngravingPart", "Engraving",
+         QT_TRANSLATE_NOOP("App::Property", "Which part of the patch's engraving this is (0: the first)")),
     )
 
     def execute(self, obj):
@@ -248,12 +258,13 @@ class Engraving(_Child):
             raise ValueError(QT_TRANSLATE_NOOP("Sliceform", "this engraving's patch or sliceform was deleted"))
         patches = sliceform.Proxy.flat_patches(sliceform)
         drawing = sliceform.Proxy.sheet_drawings(sliceform).get(patches[patch.Index]["id"]) if patch.Index < len(patches) else None
-        if drawing is None:
+        parts = geometry.engraving_parts(drawing) if drawing is not None else []
+        if obj.EngravingPart >= len(parts):
             return  # left over from a larger design until the sync that follows removes it
-        built = (sliceform.Proxy.key, patch.Index)
+        built = (sliceform.Proxy.key, patch.Index, obj.EngravingPart, geometry.ENGRAVING_VIEW_EDGES)
         if getattr(self, "built", None) == built and not obj.Shape.isNull():
             return
-        obj.Shape = _on_sheet(geometry.patch_engraving(drawing), sliceform.Proxy.sheets(sliceform))
+        obj.Shape = _on_sheet(geometry.stroke_shapes(parts[obj.EngravingPart]), sliceform.Proxy.sheets(sliceform))
         self.built = built
 
 
@@ -321,10 +332,11 @@ def _new_page(doc, sliceform, index):
     return page
 
 
-def _new_engraving(doc, patch):
-    obj = doc.addObject("Part::FeaturePython", patch.Name + "_Engraving")
+def _new_engraving(doc, patch, part):
+    obj = doc.addObject("Part::FeaturePython", patch.Name + "_Engraving" + ("" if part == 0 else str(part + 1)))
     Engraving(obj)
     obj.Patch = patch
+    obj.EngravingPart = part
     if FreeCAD.GuiUp:
         from sliceform_gui import view_provider
 
@@ -333,10 +345,10 @@ def _new_engraving(doc, patch):
     return obj
 
 
-def _engrave_view_name(patch):
+def _engrave_view_name(patch, part):
     """..._Engrave: TechDraw's DXF writes each view on a layer named after it, so a laser's
     software can map every layer ending so to engraving."""
-    return patch.Name + "_Engrave"
+    return patch.Name + ("" if part == 0 else "_{}".format(part + 1)) + "_Engrave"
 
 
 def _centre(view, sheets):
@@ -462,23 +474,27 @@ def wanted(sliceform):
             sheet_of[p["id"]] = s
     pages = [(_page_label(sliceform, i), _sheet_text(sheets), True) for i in range(len(sheets["sheets"]))]
     centre = (round(sheets["width"] / 2, 6), round(sheets["height"] / 2, 6))
-    return ids, [sheet_of.get(i, -1) for i in ids], pages, [centre] * len(ids)
+    drawings = proxy.sheet_drawings(sliceform)
+    parts = [len(geometry.engraving_parts(drawings[i])) if i in drawings else 1 for i in ids]
+    return ids, [sheet_of.get(i, -1) for i in ids], pages, [centre] * len(ids), parts
 
 
 def shown(sliceform):
     """What the children show now, in wanted()'s terms."""
     patches = patches_of(sliceform)
     ids = [p.PatchId for p in patches]
-    sheets, centres = [], []
+    sheets, centres, parts = [], [], []
     page_of_view = {}
     pages = pages_of(sliceform)
     for page in pages:
         for view in page.Views:
             page_of_view[view.Name] = page.SheetIndex
     for patch in patches:
-        # A patch shows on a sheet when its drawing and its engraving each have one view,
-        # both on that sheet's page, both centred on it.
-        drawings = [sheet_patch_of(patch), engraving_of(patch)]
+        # A patch shows on a sheet when its drawing and each part of its engraving have one
+        # view, all on that sheet's page, all centred on it.
+        engraving = engraving_parts_of(patch)
+        parts.append(len(engraving) if [e.EngravingPart for e in engraving] == list(range(len(engraving))) else -1)
+        drawings = [sheet_patch_of(patch)] + (engraving or [None])
         views = [views_of(d) if d is not None else [] for d in drawings]
         where = {page_of_view.get(v[0].Name, -1) for v in views if len(v) == 1}
         at = {(round(v[0].X.Value, 6), round(v[0].Y.Value, 6)) for v in views if v}
@@ -487,7 +503,7 @@ def shown(sliceform):
     pages = [(p.Label, getattr(p, "Sheet", ""), _drawn_in_order(p)) for p in pages]
     if _sheet_engravings(sliceform):
         pages.append(None)  # an older document's engravings are still there
-    return ids, sheets, pages, centres
+    return ids, sheets, pages, centres, parts
 
 
 def sync(sliceform, recompute=True):
@@ -498,7 +514,7 @@ def sync(sliceform, recompute=True):
     want = wanted(sliceform)
     if want is None or want == shown(sliceform):
         return False
-    ids, sheet_index, page_list, _centres = want
+    ids, sheet_index, page_list, _centres, part_counts = want
     sheet_count = len(page_list)
     doc = sliceform.Document
     if _observer is not None:
@@ -514,7 +530,7 @@ def sync(sliceform, recompute=True):
     patches = patches_of(sliceform)
     extra = patches[len(ids):]
     for patch in extra:
-        for drawing in (engraving_of(patch), sheet_patch_of(patch)):
+        for drawing in engraving_parts_of(patch) + [sheet_patch_of(patch)]:
             if drawing is not None:
                 remove_objects(doc, views_of(drawing) + [drawing])
     remove_objects(doc, extra)
@@ -555,11 +571,19 @@ def sync(sliceform, recompute=True):
         return view
 
     views, engraved = [], []
-    for patch, patch_id, s in zip(patches, ids, sheet_index):
+    for patch, patch_id, s, count in zip(patches, ids, sheet_index, part_counts):
         sheet_patch = sheet_patch_of(patch) or _new_sheet_patch(doc, patch)
         views.append((patch, sheet_patch, view_on(pages[s], sheet_patch, patch.Name + "_View")))
-        engraving = engraving_of(patch) or _new_engraving(doc, patch)
-        engraved.append((engraving, view_on(pages[s], engraving, _engrave_view_name(patch))))
+        parts = engraving_parts_of(patch)
+        for engraving in parts[count:]:
+            remove_objects(doc, views_of(engraving) + [engraving])
+        parts = parts[:count]
+        while len(parts) < count:
+            parts.append(_new_engraving(doc, patch, len(parts)))
+        for k, engraving in enumerate(parts):
+            if engraving.EngravingPart != k:
+                engraving.EngravingPart = k
+            engraved.append((engraving, view_on(pages[s], engraving, _engrave_view_name(patch, k))))
     # Engravings after every patch view of their page: a page draws its views in this
     # order, and each patch view's white face would hide the labels of one drawn before it.
     for page in pages:
@@ -579,8 +603,12 @@ def sync(sliceform, recompute=True):
             (sheet_patch, "{} on sheet {}".format(patch_id, s + 1)),
             (view, patch_id),
         ]
-    for (engraving, view), patch_id, s in zip(engraved, ids, sheet_index):
-        labels += [(engraving, "{} engraving on sheet {}".format(patch_id, s + 1)), (view, "{} engraving".format(patch_id))]
+    sheet_of_patch = {patch.Name: (patch_id, s) for patch, patch_id, s in zip(patches, ids, sheet_index)}
+    for engraving, view in engraved:
+        patch_id, s = sheet_of_patch[engraving.Patch.Name]
+        part = "" if engraving.EngravingPart == 0 else " {}".format(engraving.EngravingPart + 1)
+        labels += [(engraving, "{} engraving{} on sheet {}".format(patch_id, part, s + 1)),
+                   (view, "{} engraving{}".format(patch_id, part))]
     labels = [(obj, label) for obj, label in labels if obj.Label != label]
     for obj, _label in labels:
         obj.Label = obj.Name + "_"

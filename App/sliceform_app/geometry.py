@@ -74,6 +74,29 @@ def patch_cuts(patch):
     return [c.toShape() for loop in patch["cut"] for c in loop_curves(loop, False)]
 
 
-def patch_engraving(patch):
-    """One patch's engraved strokes (its id, partner labels, marks) as drawn on its sheet."""
-    return [Part.makePolygon([V(x, y, 0) for x, y in stroke]) for stroke in patch["engrave"] if len(stroke) > 1]
+# A patch's engraving goes to TechDraw in views of at most this many edges. TechDraw 0.20
+# looks for faces among a view's edges by computing, for each edge, the box of every other:
+# fandisk's largest engraving with directions auto (460 edges) drew in 721 ms as one view
+# and 97 ms as six (docs/decisions.md).
+ENGRAVING_VIEW_EDGES = 100
+
+
+def engraving_parts(patch):
+    """One patch's engraved strokes (its id, partner labels, marks) as drawn on its sheet, in
+    consecutive groups of at most ENGRAVING_VIEW_EDGES edges (a longer stroke alone), one
+    group a TechDraw view; at least one group."""
+    parts, edges = [[]], 0
+    for stroke in patch["engrave"]:
+        if len(stroke) < 2:
+            continue
+        if parts[-1] and edges + len(stroke) - 1 > ENGRAVING_VIEW_EDGES:
+            parts.append([])
+            edges = 0
+        parts[-1].append(stroke)
+        edges += len(stroke) - 1
+    return parts
+
+
+def stroke_shapes(strokes):
+    """Engraved strokes as polylines on the XY plane."""
+    return [Part.makePolygon([V(x, y, 0) for x, y in stroke]) for stroke in strokes]

@@ -95,7 +95,7 @@ class ViewProviderPatch(_Stateless):
     def claimChildren(self):
         from sliceform_app import children
 
-        drawings = [children.sheet_patch_of(self.Object), children.engraving_of(self.Object)]
+        drawings = [children.sheet_patch_of(self.Object)] + children.engraving_parts_of(self.Object)
         return [d for d in drawings if d is not None]
 
 

@@ -244,6 +244,11 @@
         <source>The patch whose labels these are</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <location filename="../../App/sliceform_app/children.py" line="250"/>
+        <source>Which part of the patch&apos;s engraving this is (0: the first)</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>Sliceform</name>

@@ -69,18 +69,29 @@ class TestSliceformChildren(unittest.TestCase):
         self.assertEqual(len(patches), sliceform.PatchCount)
         self.assertEqual(len(pages), sliceform.SheetCount)
         self.assertEqual(sum(len(children.patch_views(p)) for p in pages), sliceform.PatchCount)
-        # An engraving per patch, its one view on the patch's page, drawn after every patch
+        # An engraving per patch, in as many parts as geometry.engraving_parts makes of its
+        # strokes, each part with its one view on the patch's page, drawn after every patch
         # view of that page, so the patch views' white faces do not hide the labels.
+        from sliceform_app import geometry
+
+        drawings = sliceform.Proxy.sheet_drawings(sliceform)
         engravings = children.engravings_of(sliceform)
-        self.assertEqual([e.Patch for e in engravings], patches)
-        self.assertEqual([len(children.views_of(e)) for e in engravings], [1] * len(patches))
-        for patch, engraving in zip(patches, engravings):
+        parts = [len(geometry.engraving_parts(drawings[p.PatchId])) for p in patches]
+        self.assertEqual([e.Patch for e in engravings], [p for p, n in zip(patches, parts) for _ in range(n)])
+        self.assertEqual([e.EngravingPart for e in engravings], [k for n in parts for k in range(n)])
+        self.assertEqual([len(children.views_of(e)) for e in engravings], [1] * len(engravings))
+        for engraving in engravings:
             page = [p for p in pages if children.views_of(engraving)[0] in p.Views]
-            self.assertEqual(page, [p for p in pages if children.views_of(children.sheet_patch_of(patch))[0] in p.Views])
+            patch_view = children.views_of(children.sheet_patch_of(engraving.Patch))[0]
+            self.assertEqual(page, [p for p in pages if patch_view in p.Views])
+        for patch in patches:  # the parts hold the patch's strokes, each once
+            strokes = [s for s in drawings[patch.PatchId]["engrave"] if len(s) > 1]
+            shown = [e.Shape for e in children.engraving_parts_of(patch)]
+            self.assertEqual(sum(len(shape.Edges) for shape in shown), sum(len(s) - 1 for s in strokes), patch.PatchId)
         for page in pages:
             drawn = page.Views
             self.assertEqual(drawn, children.patch_views(page) + children.engraving_views(page))
-            self.assertEqual(len(children.patch_views(page)), len(children.engraving_views(page)))
+            self.assertEqual(len(children.patch_views(page)), len({v.Source[0].Patch for v in children.engraving_views(page)}))
         report = json.loads(sliceform.Proxy.report_json(sliceform))
         self.assertEqual([p.PatchId for p in patches], [f["id"] for f in sliceform.Proxy.flat_patches(sliceform)])
         self.assertEqual(sorted(p.PatchId for p in patches), sorted(p["id"] for p in report["patches"]))
@@ -354,6 +365,41 @@ class TestSliceformChildren(unittest.TestCase):
                 self.assertEqual(placed[patch.PatchId], page.SheetIndex)
                 seen.append(view.Label)
         self.assertEqual(sorted(seen), sorted(placed))
+
+    def test_a_long_engraving_is_drawn_in_parts_of_a_few_edges_each(self):
+        """TechDraw's face search costs the square of a view's edges, so a patch's engraving
+        goes to views of at most geometry.ENGRAVING_VIEW_EDGES edges: here 12, which splits
+        every patch's labels. Each part has its view on the patch's page, named ..._Engrave
+        (its DXF layer); when parts are no longer needed an edit removes them."""
+        from sliceform_app import children, geometry
+
+        limit = geometry.ENGRAVING_VIEW_EDGES
+        try:
+            geometry.ENGRAVING_VIEW_EDGES = 12
+            _box, cut = self.box_with_hole()
+            sliceform = self.create(cut)
+            self.check_children(sliceform)
+            engravings = children.engravings_of(sliceform)
+            self.assertGreater(len(engravings), 2 * sliceform.PatchCount)
+            drawings = sliceform.Proxy.sheet_drawings(sliceform).values()
+            longest = max(len(s) - 1 for d in drawings for s in d["engrave"])  # a stroke is never split
+            for e in engravings:
+                self.assertLessEqual(len(e.Shape.Edges), max(12, longest), e.Label)
+                view = children.views_of(e)[0]
+                self.assertTrue(view.Name.endswith("_Engrave"), view.Name)
+                self.assertEqual(view.Label, "{} engraving{}".format(e.Patch.PatchId, " {}".format(e.EngravingPart + 1) if e.EngravingPart else ""))
+            self.assertEqual(sliceform.ChildCount, sliceform.PatchCount + sliceform.SheetCount + len(engravings))
+            geometry.ENGRAVING_VIEW_EDGES = limit
+            FreeCAD.setActiveTransaction("Thickness")
+            sliceform.Thickness = 0.35
+            self.doc.recompute()
+            FreeCAD.closeActiveTransaction()
+            self.check_children(sliceform)
+            self.assertEqual([e.EngravingPart for e in children.engravings_of(sliceform)], [0] * sliceform.PatchCount)
+            left = [o.Name for o in self.doc.Objects if getattr(o, "EngravingPart", 0) > 0]
+            self.assertEqual(left, [])
+        finally:
+            geometry.ENGRAVING_VIEW_EDGES = limit
 
     def test_techdraw_dxf_keeps_arcs_and_puts_the_engraving_on_a_layer_of_its_own(self):
         """TechDraw's own DXF of a sheet whose patches have a round hole: the hole's arcs

@@ -109,9 +109,12 @@ class TestSliceformFeature(unittest.TestCase):
         pages = children.pages_of(sliceform)
         self.assertEqual(len(pages), sliceform.SheetCount)
         self.assertEqual(sum(len(children.patch_views(p)) for p in pages), sliceform.PatchCount)
-        # Each patch's engraving has a view of its own: a layer of its own in TechDraw's DXF.
-        self.assertEqual(sum(len(children.engraving_views(p)) for p in pages), sliceform.PatchCount)
-        self.assertEqual([len(p.Views) for p in pages], [2 * len(children.patch_views(p)) for p in pages])
+        # Each part of each patch's engraving has a view of its own: a layer of its own in
+        # TechDraw's DXF. Every patch has one part at least.
+        engravings = children.engravings_of(sliceform)
+        self.assertEqual({e.Patch for e in engravings}, set(patches))
+        self.assertEqual(sum(len(children.engraving_views(p)) for p in pages), len(engravings))
+        self.assertEqual(sum(len(p.Views) for p in pages), sliceform.PatchCount + len(engravings))
         page = pages[0]
         self.assertEqual(page.TypeId, "TechDraw::DrawPage")
         self.assertTrue(page.Views)

@@ -153,7 +153,7 @@ try:
     patch = children.patches_of(sliceform)[0]
     item = tree_item(tree, patch.Label)
     assert [item.child(i).text(0) for i in range(item.childCount())] == [
-        children.sheet_patch_of(patch).Label, children.engraving_of(patch).Label]
+        children.sheet_patch_of(patch).Label] + [e.Label for e in children.engraving_parts_of(patch)]
 
     # 1. Task panel: a Recompute that changes the patch and sheet counts, then Cancel.
     FreeCADGui.Selection.clearSelection()

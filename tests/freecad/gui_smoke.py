@@ -82,7 +82,7 @@ try:
     claimed = sliceform.ViewObject.Proxy.claimChildren()
     assert set(children.pages_of(sliceform) + children.patches_of(sliceform)) == set(claimed), "tree children"
     patch = children.patches_of(sliceform)[0]
-    assert patch.ViewObject.Proxy.claimChildren() == [children.sheet_patch_of(patch), children.engraving_of(patch)], "patch children"
+    assert patch.ViewObject.Proxy.claimChildren() == [children.sheet_patch_of(patch)] + children.engraving_parts_of(patch), "patch children"
     assert not torus.ViewObject.Visibility, "the source was not hidden"
 
     FreeCADGui.Selection.clearSelection()
