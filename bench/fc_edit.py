@@ -5,7 +5,7 @@
 # a box minus a cylinder, each edit `repeat` times with a value not used before (a value
 # from before would find its design in memory). Times: the recompute, which is what the user
 # waits for (TechDraw 0.20 draws its views inside it; 1.0 in threads, after it), and the
-# recompute until every sheet is drawn; and the recompute's time per kind of object, from
+# time until every sheet is drawn; and the recompute's time per kind of object, from
 # the document observer's timestamps. Job and results are JSON files named by environment
 # variables.
 import json
@@ -15,8 +15,14 @@ import time
 import FreeCAD
 import Mesh
 
+from PySide import QtCore
+
 from sliceform_app import children, feature
 
+# FreeCAD 1.0 computes TechDraw's views in threads whose results arrive through Qt's event
+# loop, and freecadcmd 1.0 has no Qt application: without one the views would never be drawn
+# and "drawn s" would mean nothing (the tests make one the same way).
+_qt_application = QtCore.QCoreApplication.instance() or QtCore.QCoreApplication([])
 job = json.load(open(os.environ["SLICEFORM_FC_JOB"]))
 repeat = job["repeat"]
 
