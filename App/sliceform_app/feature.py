@@ -13,9 +13,9 @@ import json
 import FreeCAD
 import Part
 
-from sliceform_app import children, native, parameters, shapes
+from sliceform_app import native, observer, parameters, shapes, syncing
 
-children.install_observer()
+observer.install_observer()
 
 
 QT_TRANSLATE_NOOP = FreeCAD.Qt.QT_TRANSLATE_NOOP
@@ -475,7 +475,7 @@ def makeSliceform(source, doc=None, **properties):
         from sliceform_gui import view_provider
 
         view_provider.ViewProviderSliceform(obj.ViewObject)
-    with children.held():
+    with observer.held():
         doc.recompute()
-        children.sync(obj)
+        syncing.sync(obj)
     return obj

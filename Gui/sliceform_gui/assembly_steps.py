@@ -8,7 +8,7 @@ import json
 import FreeCAD
 import FreeCADGui
 
-from sliceform_app import assembly_steps, children
+from sliceform_app import assembly_steps, lookup
 
 translate = FreeCAD.Qt.translate
 
@@ -25,7 +25,7 @@ class AssemblyStepsPanel:
         self.obj = sliceform
         report = json.loads(sliceform.Proxy.report_json(sliceform))
         self.steps = assembly_steps.steps(report)
-        self.patches = {p.PatchId: p for p in children.patches_of(sliceform)}
+        self.patches = {p.PatchId: p for p in lookup.patches_of(sliceform)}
         shown = [sliceform] + list(self.patches.values())
         self.saved = {o.Name: (o.ViewObject.Visibility, getattr(o.ViewObject, "ShapeColor", None)) for o in shown}
         self.colour = {p.PatchId: p.ViewObject.ShapeColor for p in self.patches.values()}

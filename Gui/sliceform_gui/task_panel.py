@@ -89,14 +89,14 @@ class SliceformTaskPanel:
                 setattr(self.obj, name, combo.currentText())
 
     def recompute(self):
-        from sliceform_app import children
+        from sliceform_app import observer, syncing
 
         self.apply()
         QtGui.QApplication.setOverrideCursor(QtCore.Qt.WaitCursor)
         try:
-            with children.held():
+            with observer.held():
                 self.doc.recompute()
-                children.sync(self.obj)  # inside the panel's transaction
+                syncing.sync(self.obj)  # inside the panel's transaction
         finally:
             QtGui.QApplication.restoreOverrideCursor()
         self.show_results()

@@ -42,19 +42,19 @@ class ViewProviderSliceform(_Stateless):
         return icon_path("Sliceform_Create.svg")
 
     def claimChildren(self):
-        from sliceform_app import children
+        from sliceform_app import lookup
 
         obj = self.Object
-        return children.pages_of(obj) + children.patches_of(obj)
+        return lookup.pages_of(obj) + lookup.patches_of(obj)
 
     def onDelete(self, vobj, subelements):
         """Deletes the children with the feature (in the same Delete step) and shows the
         source again."""
-        from sliceform_app import children
+        from sliceform_app import making
 
         obj = vobj.Object
         source = obj.Source
-        children.remove_children(obj)
+        making.remove_children(obj)
         if source is not None and source.ViewObject is not None:
             source.ViewObject.Visibility = True
         return True
@@ -93,9 +93,9 @@ class ViewProviderPatch(_Stateless):
         return icon_path("Sliceform_Slices.svg")
 
     def claimChildren(self):
-        from sliceform_app import children
+        from sliceform_app import lookup
 
-        drawings = [children.sheet_patch_of(self.Object)] + children.engraving_parts_of(self.Object)
+        drawings = [lookup.sheet_patch_of(self.Object)] + lookup.engraving_parts_of(self.Object)
         return [d for d in drawings if d is not None]
 
 

@@ -5,37 +5,37 @@
 <context>
     <name>App::Property</name>
     <message>
-        <location filename="../../App/sliceform_app/children.py" line="177"/>
+        <location filename="../../App/sliceform_app/children.py" line="75"/>
         <source>The sliceform this patch belongs to</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../App/sliceform_app/children.py" line="177"/>
+        <location filename="../../App/sliceform_app/children.py" line="76"/>
         <source>Position of the patch in the design</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../App/sliceform_app/children.py" line="177"/>
+        <location filename="../../App/sliceform_app/children.py" line="77"/>
         <source>The id engraved on the patch</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../App/sliceform_app/children.py" line="211"/>
+        <location filename="../../App/sliceform_app/children.py" line="110"/>
         <source>The patch shown on its sheet</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../App/sliceform_app/children.py" line="306"/>
+        <location filename="../../App/sliceform_app/making.py" line="45"/>
         <source>Which sheet of the layout</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../App/sliceform_app/children.py" line="304"/>
+        <location filename="../../App/sliceform_app/making.py" line="43"/>
         <source>The sliceform whose sheet this page shows</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../App/sliceform_app/children.py" line="308"/>
+        <location filename="../../App/sliceform_app/making.py" line="47"/>
         <source>The sheet&apos;s size and margin</source>
         <translation type="unfinished"></translation>
     </message>
@@ -240,12 +240,12 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../App/sliceform_app/children.py" line="239"/>
+        <location filename="../../App/sliceform_app/children.py" line="139"/>
         <source>The patch whose labels these are</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../App/sliceform_app/children.py" line="250"/>
+        <location filename="../../App/sliceform_app/children.py" line="141"/>
         <source>Which part of the patch&apos;s engraving this is (0: the first)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -353,12 +353,12 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../App/sliceform_app/children.py" line="185"/>
+        <location filename="../../App/sliceform_app/children.py" line="82"/>
         <source>this patch&apos;s sliceform was deleted: delete the patch too</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../App/sliceform_app/children.py" line="219"/>
+        <location filename="../../App/sliceform_app/children.py" line="117"/>
         <source>this drawing&apos;s patch or sliceform was deleted</source>
         <translation type="unfinished"></translation>
     </message>
@@ -488,7 +488,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../App/sliceform_app/children.py" line="247"/>
+        <location filename="../../App/sliceform_app/children.py" line="148"/>
         <source>this engraving&apos;s patch or sliceform was deleted</source>
         <translation type="unfinished"></translation>
     </message>

@@ -20,12 +20,12 @@ SLICES = 24
 def snapshot(doc, sliceform):
     """What a user sees of the document: objects, labels, pages and views, results, states
     and the Undo stack."""
-    from sliceform_app import children
+    from sliceform_app import lookup
 
     return {
         "objects": sorted((o.Name, o.Label, o.TypeId) for o in doc.Objects),
-        "views": [sorted(v.Label for v in p.Views) for p in children.pages_of(sliceform)],
-        "patches": [(p.Name, p.PatchId, round(p.Shape.Area, 6)) for p in children.patches_of(sliceform)],
+        "views": [sorted(v.Label for v in p.Views) for p in lookup.pages_of(sliceform)],
+        "patches": [(p.Name, p.PatchId, round(p.Shape.Area, 6)) for p in lookup.patches_of(sliceform)],
         "results": (sliceform.PatchCount, sliceform.SheetCount, sliceform.Report),
         "touched": sorted(o.Name for o in doc.Objects if "Touched" in o.State or "Invalid" in o.State),
         "undo": doc.UndoNames,
@@ -62,36 +62,36 @@ class TestSliceformChildren(unittest.TestCase):
         return sliceform
 
     def check_children(self, sliceform):
-        from sliceform_app import children
+        from sliceform_app import lookup
 
-        patches = children.patches_of(sliceform)
-        pages = children.pages_of(sliceform)
+        patches = lookup.patches_of(sliceform)
+        pages = lookup.pages_of(sliceform)
         self.assertEqual(len(patches), sliceform.PatchCount)
         self.assertEqual(len(pages), sliceform.SheetCount)
-        self.assertEqual(sum(len(children.patch_views(p)) for p in pages), sliceform.PatchCount)
+        self.assertEqual(sum(len(lookup.patch_views(p)) for p in pages), sliceform.PatchCount)
         # An engraving per patch, in as many parts as geometry.engraving_parts makes of its
         # strokes, each part with its one view on the patch's page, drawn after every patch
         # view of that page, so the patch views' white faces do not hide the labels.
         from sliceform_app import geometry
 
         drawings = sliceform.Proxy.sheet_drawings(sliceform)
-        engravings = children.engravings_of(sliceform)
+        engravings = lookup.engravings_of(sliceform)
         parts = [len(geometry.engraving_parts(drawings[p.PatchId])) for p in patches]
         self.assertEqual([e.Patch for e in engravings], [p for p, n in zip(patches, parts) for _ in range(n)])
         self.assertEqual([e.EngravingPart for e in engravings], [k for n in parts for k in range(n)])
-        self.assertEqual([len(children.views_of(e)) for e in engravings], [1] * len(engravings))
+        self.assertEqual([len(lookup.views_of(e)) for e in engravings], [1] * len(engravings))
         for engraving in engravings:
-            page = [p for p in pages if children.views_of(engraving)[0] in p.Views]
-            patch_view = children.views_of(children.sheet_patch_of(engraving.Patch))[0]
+            page = [p for p in pages if lookup.views_of(engraving)[0] in p.Views]
+            patch_view = lookup.views_of(lookup.sheet_patch_of(engraving.Patch))[0]
             self.assertEqual(page, [p for p in pages if patch_view in p.Views])
         for patch in patches:  # the parts hold the patch's strokes, each once
             strokes = [s for s in drawings[patch.PatchId]["engrave"] if len(s) > 1]
-            shown = [e.Shape for e in children.engraving_parts_of(patch)]
+            shown = [e.Shape for e in lookup.engraving_parts_of(patch)]
             self.assertEqual(sum(len(shape.Edges) for shape in shown), sum(len(s) - 1 for s in strokes), patch.PatchId)
         for page in pages:
             drawn = page.Views
-            self.assertEqual(drawn, children.patch_views(page) + children.engraving_views(page))
-            self.assertEqual(len(children.patch_views(page)), len({v.Source[0].Patch for v in children.engraving_views(page)}))
+            self.assertEqual(drawn, lookup.patch_views(page) + lookup.engraving_views(page))
+            self.assertEqual(len(lookup.patch_views(page)), len({v.Source[0].Patch for v in lookup.engraving_views(page)}))
         report = json.loads(sliceform.Proxy.report_json(sliceform))
         self.assertEqual([p.PatchId for p in patches], [f["id"] for f in sliceform.Proxy.flat_patches(sliceform)])
         self.assertEqual(sorted(p.PatchId for p in patches), sorted(p["id"] for p in report["patches"]))
@@ -99,19 +99,19 @@ class TestSliceformChildren(unittest.TestCase):
         self.assertEqual(left, [])
 
     def test_outlist_is_only_the_source_and_children_link_to_it(self):
-        from sliceform_app import children
+        from sliceform_app import lookup
 
         _box, cut = self.box_with_hole()
         sliceform = self.create(cut)
         self.check_children(sliceform)
         self.assertEqual(sliceform.OutList, [cut])
-        for patch in children.patches_of(sliceform):
+        for patch in lookup.patches_of(sliceform):
             self.assertEqual(patch.Sliceform, sliceform)
             self.assertIn(sliceform, patch.OutList)
-        for page in children.pages_of(sliceform):
+        for page in lookup.pages_of(sliceform):
             self.assertEqual(page.Sliceform, sliceform)
         # Every child but the templates (which the pages use) depends on the feature.
-        made = set(o.Name for o in children.owned_objects(sliceform) if o.TypeId != "TechDraw::DrawSVGTemplate")
+        made = set(o.Name for o in lookup.owned_objects(sliceform) if o.TypeId != "TechDraw::DrawSVGTemplate")
         self.assertTrue(made <= set(o.Name for o in sliceform.InListRecursive))
 
     def test_no_purge_touched_in_the_addon(self):
@@ -209,7 +209,7 @@ class TestSliceformChildren(unittest.TestCase):
     def test_aborted_trial_recompute_restores_the_document(self):
         """The task panel's Cancel: its transaction aborted after a Recompute that changed
         the patch and sheet counts."""
-        from sliceform_app import children
+        from sliceform_app import observer, syncing
 
         _box, cut = self.box_with_hole(60)
         sliceform = self.create(cut)
@@ -217,9 +217,9 @@ class TestSliceformChildren(unittest.TestCase):
         self.doc.openTransaction("Edit sliceform")
         sliceform.Slices = 48
         sliceform.SheetSize = "A3"
-        with children.held():
+        with observer.held():
             self.doc.recompute()
-            children.sync(sliceform)
+            syncing.sync(sliceform)
         trial = snapshot(self.doc, sliceform)
         self.assertNotEqual(trial["results"], before["results"])
         self.assertNotEqual(len(trial["patches"]), len(before["patches"]))
@@ -231,7 +231,7 @@ class TestSliceformChildren(unittest.TestCase):
         self.check_children(sliceform)
 
     def test_export_and_report_right_after_reopen(self):
-        from sliceform_app import children
+        from sliceform_app import lookup
 
         _box, cut = self.box_with_hole(60)
         sliceform = self.create(cut)
@@ -243,7 +243,7 @@ class TestSliceformChildren(unittest.TestCase):
         sliceform = self.doc.getObject("Sliceform")
         touched = [o.Name for o in self.doc.Objects if "Touched" in o.State]
         self.assertEqual(touched, [])
-        self.assertEqual(len(children.patches_of(sliceform)), patches)
+        self.assertEqual(len(lookup.patches_of(sliceform)), patches)
         self.assertIsNone(sliceform.Proxy.design)  # nothing of the design is saved
         folder = tempfile.mkdtemp()
         written = sliceform.Proxy.write_files(sliceform, folder)["written"]
@@ -352,14 +352,14 @@ class TestSliceformChildren(unittest.TestCase):
         self.assertAlmostEqual(box.Center.z, 100, delta=3)
 
     def test_view_labels_are_the_patch_ids(self):
-        from sliceform_app import children
+        from sliceform_app import lookup
 
         _box, cut = self.box_with_hole(60)
         sliceform = self.create(cut)
         placed = {p["id"]: s for s, sheet in enumerate(sliceform.Proxy.sheets(sliceform)["sheets"]) for p in sheet}
         seen = []
-        for page in children.pages_of(sliceform):
-            for view in children.patch_views(page):
+        for page in lookup.pages_of(sliceform):
+            for view in lookup.patch_views(page):
                 patch = view.Source[0].Patch
                 self.assertEqual(view.Label, patch.PatchId)
                 self.assertEqual(placed[patch.PatchId], page.SheetIndex)
@@ -371,7 +371,7 @@ class TestSliceformChildren(unittest.TestCase):
         goes to views of at most geometry.ENGRAVING_VIEW_EDGES edges: here 12, which splits
         every patch's labels. Each part has its view on the patch's page, named ..._Engrave
         (its DXF layer); when parts are no longer needed an edit removes them."""
-        from sliceform_app import children, geometry
+        from sliceform_app import geometry, lookup
 
         limit = geometry.ENGRAVING_VIEW_EDGES
         try:
@@ -379,13 +379,13 @@ class TestSliceformChildren(unittest.TestCase):
             _box, cut = self.box_with_hole()
             sliceform = self.create(cut)
             self.check_children(sliceform)
-            engravings = children.engravings_of(sliceform)
+            engravings = lookup.engravings_of(sliceform)
             self.assertGreater(len(engravings), 2 * sliceform.PatchCount)
             drawings = sliceform.Proxy.sheet_drawings(sliceform).values()
             longest = max(len(s) - 1 for d in drawings for s in d["engrave"])  # a stroke is never split
             for e in engravings:
                 self.assertLessEqual(len(e.Shape.Edges), max(12, longest), e.Label)
-                view = children.views_of(e)[0]
+                view = lookup.views_of(e)[0]
                 self.assertTrue(view.Name.endswith("_Engrave"), view.Name)
                 self.assertEqual(view.Label, "{} engraving{}".format(e.Patch.PatchId, " {}".format(e.EngravingPart + 1) if e.EngravingPart else ""))
             self.assertEqual(sliceform.ChildCount, sliceform.PatchCount + sliceform.SheetCount + len(engravings))
@@ -395,7 +395,7 @@ class TestSliceformChildren(unittest.TestCase):
             self.doc.recompute()
             FreeCAD.closeActiveTransaction()
             self.check_children(sliceform)
-            self.assertEqual([e.EngravingPart for e in children.engravings_of(sliceform)], [0] * sliceform.PatchCount)
+            self.assertEqual([e.EngravingPart for e in lookup.engravings_of(sliceform)], [0] * sliceform.PatchCount)
             left = [o.Name for o in self.doc.Objects if getattr(o, "EngravingPart", 0) > 0]
             self.assertEqual(left, [])
         finally:
@@ -410,7 +410,7 @@ class TestSliceformChildren(unittest.TestCase):
 
         import TechDraw
         from TestSliceformFeature import wait_for_views
-        from sliceform_app import children
+        from sliceform_app import lookup
 
         box = self.doc.addObject("Part::Box", "Box")
         box.Length, box.Width, box.Height = 80, 60, 40
@@ -422,7 +422,7 @@ class TestSliceformChildren(unittest.TestCase):
         self.doc.recompute()
         sliceform = self.create(cut, Slices=16)
         self.check_children(sliceform)
-        page = children.pages_of(sliceform)[0]
+        page = lookup.pages_of(sliceform)[0]
         wait_for_views(page)
         path = os.path.join(tempfile.mkdtemp(), "sheet.dxf")
         TechDraw.writeDXFPage(page, path)
@@ -432,56 +432,56 @@ class TestSliceformChildren(unittest.TestCase):
         entities = text[text.index("ENTITIES"):]
         found = collections.Counter(
             (layer, kind) for kind, layer in re.findall(r"\n  0\n(LINE|ARC|CIRCLE|SPLINE|LWPOLYLINE)\n(?:.*\n)*?  8\n([^\n]+)\n", entities))
-        engrave_layers = {v.Name for v in children.engraving_views(page)}
+        engrave_layers = {v.Name for v in lookup.engraving_views(page)}
         self.assertTrue(engrave_layers and all(name.endswith("_Engrave") for name in engrave_layers), engrave_layers)
-        cut_layers = {v.Name for v in children.patch_views(page)}
+        cut_layers = {v.Name for v in lookup.patch_views(page)}
         self.assertFalse(any(name.endswith("_Engrave") for name in cut_layers), cut_layers)
         self.assertGreater(sum(n for (layer, kind), n in found.items() if layer in cut_layers and kind in ("ARC", "CIRCLE")), 0, found)
         self.assertGreater(sum(n for (layer, _kind), n in found.items() if layer in engrave_layers), 20, found)
         self.assertEqual({layer for layer, _kind in found} - cut_layers - engrave_layers - {"0"}, set(), found)
         # The cut layers hold the cuts alone: as many curves as the sheet patches' edges.
-        cuts = sum(len(v.Source[0].Shape.Edges) for v in children.patch_views(page))
+        cuts = sum(len(v.Source[0].Shape.Edges) for v in lookup.patch_views(page))
         self.assertEqual(sum(n for (layer, _kind), n in found.items() if layer in cut_layers), cuts)
         engraved = [p for p in sliceform.Proxy.sheets(sliceform)["sheets"][0]]
         strokes = sum(len(s) - 1 for p in engraved for s in p["engrave"] if len(s) > 1)
-        self.assertEqual(sum(len(v.Source[0].Shape.Edges) for v in children.engraving_views(page)), strokes)
+        self.assertEqual(sum(len(v.Source[0].Shape.Edges) for v in lookup.engraving_views(page)), strokes)
         self.assertEqual(sum(n for (layer, _kind), n in found.items() if layer in engrave_layers), strokes)
 
     def test_a_new_sheet_size_moves_the_views_and_the_template(self):
         """Same patches on the same number of sheets, another sheet size: the pages get a
         template of the new size and the views stay at 1:1 on it."""
-        from sliceform_app import children
+        from sliceform_app import lookup
 
         sphere = self.doc.addObject("Part::Sphere", "Sphere")
         sphere.Radius = 30
         self.doc.recompute()
         sliceform = self.create(sphere, Slices=16, SheetSize="Custom", SheetWidth=600, SheetHeight=400)
-        ids = [p.PatchId for p in children.patches_of(sliceform)]
+        ids = [p.PatchId for p in lookup.patches_of(sliceform)]
         FreeCAD.setActiveTransaction("Edit SheetHeight")
         sliceform.SheetHeight = 500
         self.doc.recompute()
         FreeCAD.closeActiveTransaction()
-        self.assertEqual([p.PatchId for p in children.patches_of(sliceform)], ids)
+        self.assertEqual([p.PatchId for p in lookup.patches_of(sliceform)], ids)
         self.check_children(sliceform)
-        for page in children.pages_of(sliceform):
+        for page in lookup.pages_of(sliceform):
             self.assertEqual(page.Sheet, "600 x 500 mm, margin 10 mm")
             with open(page.Template.Template) as f:
                 self.assertIn('height="500mm"', f.read())
             for view in page.Views:
                 self.assertAlmostEqual(view.Y.Value, 250)
-        for patch in children.patches_of(sliceform):
-            sheet_patch = children.sheet_patch_of(patch)
+        for patch in lookup.patches_of(sliceform):
+            sheet_patch = lookup.sheet_patch_of(patch)
             self.assertAlmostEqual(sheet_patch.Shape.BoundBox.YMax, 500)  # the corner vertex
 
     def test_a_sheets_engraving_from_an_earlier_document_gives_way(self):
         """A document made when each page had one engraving for the whole sheet (linking the
         sliceform, with a SheetIndex): saved and opened, its next recompute leaves an
         engraving per patch and none per sheet."""
-        from sliceform_app import children
+        from sliceform_app import children, lookup, observer
 
         _box, cut = self.box_with_hole(60)
         sliceform = self.create(cut)
-        page = children.pages_of(sliceform)[0]
+        page = lookup.pages_of(sliceform)[0]
         old = self.doc.addObject("Part::FeaturePython", "Sliceform_Engraving01")
         children.Engraving(old)
         old.addProperty("App::PropertyLink", "Sliceform", "Engraving", "")
@@ -490,7 +490,7 @@ class TestSliceformChildren(unittest.TestCase):
         view = self.doc.addObject("TechDraw::DrawViewPart", "Sliceform_Sheet01_Engrave")
         page.addView(view)
         view.Source = [old]
-        with children.held():
+        with observer.held():
             self.doc.recompute()
         path = os.path.join(tempfile.mkdtemp(), "sheet_engraving.FCStd")
         self.doc.saveAs(path)
@@ -511,7 +511,7 @@ class TestSliceformChildren(unittest.TestCase):
         """A document saved when the feature linked its children (PatchGroup, PatchSketches,
         Pages, SheetGroup): it opens, the links go, the next recompute makes the new
         children and removes the old ones."""
-        from sliceform_app import children, feature
+        from sliceform_app import feature, observer
 
         _box, cut = self.box_with_hole(60)
         obj = self.doc.addObject("Part::FeaturePython", "Sliceform")
@@ -530,7 +530,7 @@ class TestSliceformChildren(unittest.TestCase):
         ):
             obj.addProperty(kind, name, "Children", "")
             setattr(obj, name, value)
-        with children.held():
+        with observer.held():
             self.doc.recompute()
         path = os.path.join(tempfile.mkdtemp(), "old.FCStd")
         self.doc.saveAs(path)

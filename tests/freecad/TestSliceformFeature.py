@@ -86,14 +86,14 @@ class TestSliceformFeature(unittest.TestCase):
         FreeCAD.closeDocument(self.doc.Name)
 
     def check_design(self, sliceform):
-        from sliceform_app import children
+        from sliceform_app import lookup
 
         self.assertTrue(sliceform.isValid(), sliceform.getStatusString())
         self.assertTrue(sliceform.Stable, sliceform.Report)
         self.assertEqual(sliceform.Interlocks, 0)
         self.assertGreaterEqual(sliceform.PatchCount, 4)
         self.assertEqual(len(sliceform.Shape.Faces), sliceform.PatchCount)
-        patches = children.patches_of(sliceform)
+        patches = lookup.patches_of(sliceform)
         self.assertEqual(len(patches), sliceform.PatchCount)
         for patch in patches:
             self.assertTrue(patch.isValid(), patch.getStatusString())
@@ -106,14 +106,14 @@ class TestSliceformFeature(unittest.TestCase):
             areas = sorted(f.Area for f in sliceform.Shape.Faces)
             for mine, theirs in zip(sorted(p.Shape.Area for p in patches), areas):
                 self.assertAlmostEqual(mine, theirs, delta=0.01 * theirs)
-        pages = children.pages_of(sliceform)
+        pages = lookup.pages_of(sliceform)
         self.assertEqual(len(pages), sliceform.SheetCount)
-        self.assertEqual(sum(len(children.patch_views(p)) for p in pages), sliceform.PatchCount)
+        self.assertEqual(sum(len(lookup.patch_views(p)) for p in pages), sliceform.PatchCount)
         # Each part of each patch's engraving has a view of its own: a layer of its own in
         # TechDraw's DXF. Every patch has one part at least.
-        engravings = children.engravings_of(sliceform)
+        engravings = lookup.engravings_of(sliceform)
         self.assertEqual({e.Patch for e in engravings}, set(patches))
-        self.assertEqual(sum(len(children.engraving_views(p)) for p in pages), len(engravings))
+        self.assertEqual(sum(len(lookup.engraving_views(p)) for p in pages), len(engravings))
         self.assertEqual(sum(len(p.Views) for p in pages), sliceform.PatchCount + len(engravings))
         page = pages[0]
         self.assertEqual(page.TypeId, "TechDraw::DrawPage")
@@ -137,21 +137,21 @@ class TestSliceformFeature(unittest.TestCase):
         self.doc.recompute()
         sliceform = feature.makeSliceform(torus, Slices=SLICES)
         self.check_design(sliceform)
-        from sliceform_app import children
+        from sliceform_app import lookup
 
         # Arcs and splines, not only lines: the torus' sections are free-form curves.
-        kinds = {type(e.Curve).__name__ for p in children.patches_of(sliceform) for e in p.Shape.Edges}
+        kinds = {type(e.Curve).__name__ for p in lookup.patches_of(sliceform) for e in p.Shape.Edges}
         self.assertIn("BSplineCurve", kinds)
         volume_before = torus.Shape.Volume
         before = [f.Area for f in sliceform.Shape.Faces]
-        names = [p.Name for p in children.patches_of(sliceform)]
+        names = [p.Name for p in lookup.patches_of(sliceform)]
         self.edit("Edit Radius2", lambda: setattr(torus, "Radius2", 10))
         self.check_design(sliceform)
         self.assertNotEqual(before, [f.Area for f in sliceform.Shape.Faces])
         self.assertLess(sum(f.Area for f in sliceform.Shape.Faces), sum(before))
         # Patches are rebuilt in place: the first ones keep their names.
-        common = min(len(names), len(children.patches_of(sliceform)))
-        self.assertEqual(names[:common], [p.Name for p in children.patches_of(sliceform)][:common])
+        common = min(len(names), len(lookup.patches_of(sliceform)))
+        self.assertEqual(names[:common], [p.Name for p in lookup.patches_of(sliceform)][:common])
         self.assertNotEqual(torus.Shape.Volume, volume_before)
 
     def test_fold_angle_poses_the_patches(self):
@@ -326,11 +326,11 @@ class TestSliceformFeature(unittest.TestCase):
         # Lying along X: the U sections are circles, which the sketches keep as arcs.
         cylinder.Placement.Rotation = FreeCAD.Rotation(FreeCAD.Vector(0, 1, 0), 90)
         self.doc.recompute()
-        from sliceform_app import children
+        from sliceform_app import lookup
 
         sliceform = feature.makeSliceform(cylinder, Slices=SLICES, Thickness=1.5, SheetSize="A3")
         self.check_design(sliceform)
-        kinds = {type(e.Curve).__name__ for p in children.patches_of(sliceform) for e in p.Shape.Edges}
+        kinds = {type(e.Curve).__name__ for p in lookup.patches_of(sliceform) for e in p.Shape.Edges}
         self.assertIn("Circle", kinds)
         patches, report = sliceform.PatchCount, sliceform.Report
         path = os.path.join(tempfile.mkdtemp(), "sliceform.FCStd")

@@ -20,12 +20,12 @@ result_path = os.environ["SLICEFORM_CHILDREN_RESULT"]
 
 
 def snapshot(doc, sliceform):
-    from sliceform_app import children
+    from sliceform_app import lookup
 
     return {
         "objects": sorted((o.Name, o.Label, o.TypeId) for o in doc.Objects),
-        "views": [sorted(v.Label for v in p.Views) for p in children.pages_of(sliceform)],
-        "patches": [(p.Name, p.PatchId, round(p.Shape.Area, 6)) for p in children.patches_of(sliceform)],
+        "views": [sorted(v.Label for v in p.Views) for p in lookup.pages_of(sliceform)],
+        "patches": [(p.Name, p.PatchId, round(p.Shape.Area, 6)) for p in lookup.patches_of(sliceform)],
         "results": (sliceform.PatchCount, sliceform.SheetCount, sliceform.Report),
         "touched": sorted(o.Name for o in doc.Objects if "Touched" in o.State or "Invalid" in o.State),
         "undo": doc.UndoNames,
@@ -111,7 +111,7 @@ def type_into(widget, text):
 try:
     from PySide import QtCore, QtGui
 
-    from sliceform_app import children
+    from sliceform_app import lookup
 
     FreeCADGui.activateWorkbench("SliceformWorkbench")
     doc = FreeCAD.newDocument("Children")
@@ -148,12 +148,12 @@ try:
         FreeCADGui.getMainWindow().grab().save(png.replace(".png", "_tree.png"))
     item = tree_item(tree, sliceform.Label)
     under = sorted(item.child(i).text(0) for i in range(item.childCount()))
-    expected = sorted([o.Label for o in children.pages_of(sliceform) + children.patches_of(sliceform)])
+    expected = sorted([o.Label for o in lookup.pages_of(sliceform) + lookup.patches_of(sliceform)])
     assert under == expected, "under the sliceform in the tree: {}".format(under)
-    patch = children.patches_of(sliceform)[0]
+    patch = lookup.patches_of(sliceform)[0]
     item = tree_item(tree, patch.Label)
     assert [item.child(i).text(0) for i in range(item.childCount())] == [
-        children.sheet_patch_of(patch).Label] + [e.Label for e in children.engraving_parts_of(patch)]
+        lookup.sheet_patch_of(patch).Label] + [e.Label for e in lookup.engraving_parts_of(patch)]
 
     # 1. Task panel: a Recompute that changes the patch and sheet counts, then Cancel.
     FreeCADGui.Selection.clearSelection()
@@ -238,7 +238,7 @@ try:
     FreeCAD.closeActiveTransaction()
     FreeCADGui.updateGui()
     assert sliceform.PatchCount == 6, sliceform.PatchCount
-    assert len(children.patches_of(sliceform)) == 6, len(children.patches_of(sliceform))
+    assert len(lookup.patches_of(sliceform)) == 6, len(lookup.patches_of(sliceform))
     assert doc.UndoNames == ["Edit Box Height", "Create sliceform"], doc.UndoNames
     FreeCADGui.runCommand("Std_Undo")
     doc.recompute()

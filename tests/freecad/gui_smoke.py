@@ -61,9 +61,9 @@ try:
     FreeCADGui.Selection.clearSelection()
     FreeCADGui.Selection.addSelection(torus)
     FreeCADGui.runCommand("Sliceform_Create")
-    from sliceform_app import children
+    from sliceform_app import lookup
 
-    made = [o for o in doc.Objects if children.is_sliceform(o)]
+    made = [o for o in doc.Objects if lookup.is_sliceform(o)]
     assert len(made) == 1, "Create added {} sliceforms".format(len(made))
     sliceform = made[0]
     assert sliceform.isValid(), sliceform.getStatusString()
@@ -77,12 +77,12 @@ try:
     # A feature made with Create chooses its directions, and says which it chose.
     assert sliceform.Directions == "auto", sliceform.Directions
     assert " up, " in sliceform.ChosenDirections and "frames" in sliceform.ChosenDirections, sliceform.ChosenDirections
-    assert len(children.patches_of(sliceform)) == sliceform.PatchCount, "patches missing"
-    assert children.pages_of(sliceform), "pages missing"
+    assert len(lookup.patches_of(sliceform)) == sliceform.PatchCount, "patches missing"
+    assert lookup.pages_of(sliceform), "pages missing"
     claimed = sliceform.ViewObject.Proxy.claimChildren()
-    assert set(children.pages_of(sliceform) + children.patches_of(sliceform)) == set(claimed), "tree children"
-    patch = children.patches_of(sliceform)[0]
-    assert patch.ViewObject.Proxy.claimChildren() == [children.sheet_patch_of(patch)] + children.engraving_parts_of(patch), "patch children"
+    assert set(lookup.pages_of(sliceform) + lookup.patches_of(sliceform)) == set(claimed), "tree children"
+    patch = lookup.patches_of(sliceform)[0]
+    assert patch.ViewObject.Proxy.claimChildren() == [lookup.sheet_patch_of(patch)] + lookup.engraving_parts_of(patch), "patch children"
     assert not torus.ViewObject.Visibility, "the source was not hidden"
 
     FreeCADGui.Selection.clearSelection()
@@ -100,7 +100,7 @@ try:
     FreeCADGui.Selection.clearSelection()
     FreeCADGui.Selection.addSelection(sliceform)
     undo_before = list(doc.UndoNames)
-    patches = {p.PatchId: p for p in children.patches_of(sliceform)}
+    patches = {p.PatchId: p for p in lookup.patches_of(sliceform)}
     before = {p.Name: (p.ViewObject.Visibility, tuple(p.ViewObject.ShapeColor)) for p in patches.values()}
     FreeCADGui.runCommand("Sliceform_AssemblySteps")
     panel = assembly_steps.current
@@ -230,7 +230,7 @@ try:
     # The whole window with the first sheet's TechDraw page beside the 3D view. Under Xvfb
     # a widget grab leaves OpenGL views blank, so the 3D view's own rendering is painted
     # into its place.
-    page = children.pages_of(sliceform)[0]
+    page = lookup.pages_of(sliceform)[0]
     page.ViewObject.show()
     FreeCADGui.updateGui()
     main = FreeCADGui.getMainWindow()

@@ -1,0 +1,172 @@
+# SPDX-License-Identifier: LGPL-2.1-or-later
+"""Making and removing a sliceform's children (children.py): patches, sheet patches,
+engravings, TechDraw pages with their templates and views."""
+import os
+import time
+
+import FreeCAD
+
+from sliceform_app import children, lookup
+
+V = FreeCAD.Vector
+QT_TRANSLATE_NOOP = FreeCAD.Qt.QT_TRANSLATE_NOOP
+
+
+def new_patch(doc, sliceform, index):
+    obj = doc.addObject("Part::Part2DObjectPython", "{}_Patch{:03d}".format(sliceform.Name, index + 1))
+    children.Patch(obj)
+    obj.Sliceform = sliceform
+    obj.Index = index
+    if FreeCAD.GuiUp:
+        from sliceform_gui import view_provider
+
+        view_provider.ViewProviderPatch(obj.ViewObject)
+        obj.ViewObject.Visibility = False
+    return obj
+
+
+def new_sheet_patch(doc, patch):
+    obj = doc.addObject("Part::FeaturePython", patch.Name + "_Sheet")
+    children.SheetPatch(obj)
+    obj.Patch = patch
+    if FreeCAD.GuiUp:
+        from sliceform_gui import view_provider
+
+        view_provider.ViewProviderSheetPatch(obj.ViewObject)
+        obj.ViewObject.Visibility = False
+    return obj
+
+
+def new_page(doc, sliceform, index):
+    page = doc.addObject("TechDraw::DrawPage", "{}_Sheet{:02d}".format(sliceform.Name, index + 1))
+    page.addProperty("App::PropertyLink", "Sliceform", "Sliceform",
+                     QT_TRANSLATE_NOOP("App::Property", "The sliceform whose sheet this page shows"))
+    page.addProperty("App::PropertyInteger", "SheetIndex", "Sliceform",
+                     QT_TRANSLATE_NOOP("App::Property", "Which sheet of the layout"))
+    page.addProperty("App::PropertyString", "Sheet", "Sliceform",
+                     QT_TRANSLATE_NOOP("App::Property", "The sheet's size and margin"))
+    for name in ("Sliceform", "SheetIndex", "Sheet"):
+        page.setEditorMode(name, 1)
+    page.Sliceform = sliceform
+    page.SheetIndex = index
+    page.Template = doc.addObject("TechDraw::DrawSVGTemplate", "{}_Template{:02d}".format(sliceform.Name, index + 1))
+    if FreeCAD.GuiUp:
+        if hasattr(page.ViewObject, "ShowFrames"):
+            page.ViewObject.ShowFrames = False  # a sheet to cut, not a drawing: no frames or labels
+        # Closed until the user opens it: TechDraw opens a visible page again on reopening.
+        page.ViewObject.Visibility = False
+    return page
+
+
+def new_engraving(doc, patch, part):
+    obj = doc.addObject("Part::FeaturePython", patch.Name + "_Engraving" + ("" if part == 0 else str(part + 1)))
+    children.Engraving(obj)
+    obj.Patch = patch
+    obj.EngravingPart = part
+    if FreeCAD.GuiUp:
+        from sliceform_gui import view_provider
+
+        view_provider.ViewProviderSheetPatch(obj.ViewObject)
+        obj.ViewObject.Visibility = False
+    return obj
+
+
+def engrave_view_name(patch, part):
+    """..._Engrave: TechDraw's DXF writes each view on a layer named after it, so a laser's
+    software can map every layer ending so to engraving."""
+    return patch.Name + ("" if part == 0 else "_{}".format(part + 1)) + "_Engrave"
+
+
+def centre_on_sheet(view, sheets):
+    """Puts the view at the sheet's centre (set only when it is not there: a set marks it
+    for recompute)."""
+    centre = (sheets["width"] / 2, sheets["height"] / 2)
+    if (round(view.X.Value, 6), round(view.Y.Value, 6)) != tuple(round(c, 6) for c in centre):
+        view.X, view.Y = centre
+
+
+def new_view(doc, page, source, name):
+    view = doc.addObject("TechDraw::DrawViewPart", name)
+    page.addView(view)
+    view.Source = [source]
+    view.Direction, view.XDirection = V(0, 0, 1), V(1, 0, 0)
+    view.ScaleType, view.Scale = "Custom", 1.0
+    return view
+
+
+def settle_views(seconds=60):
+    """Lets every TechDraw view finish what its threads are doing. FreeCAD 1.0 computes a
+    view's hidden lines, then its faces, in Qt's global thread pool and finishes the job in
+    the view when the result arrives through the event loop; a view removed meanwhile gets
+    that call with no name in the document and throws (std::logic_error through the event
+    loop: headless, a crashed interpreter). FreeCAD 0.20 computes views in the recompute,
+    and this returns at once. User input is not processed while waiting."""
+    try:
+        from PySide import QtCore
+    except ImportError:
+        return
+    app = QtCore.QCoreApplication.instance()
+    if app is None:
+        return
+    pool = QtCore.QThreadPool.globalInstance()
+    deadline = time.monotonic() + seconds
+    while time.monotonic() < deadline:
+        pool.waitForDone(100)
+        # A finished hidden-line pass starts face finding: loop until both are delivered.
+        app.processEvents(QtCore.QEventLoop.ExcludeUserInputEvents)
+        if pool.activeThreadCount() == 0:
+            app.processEvents(QtCore.QEventLoop.ExcludeUserInputEvents)
+            if pool.activeThreadCount() == 0:
+                return
+
+
+def remove_objects(doc, objects):
+    if any(o.TypeId == "TechDraw::DrawViewPart" or o.TypeId == "TechDraw::DrawPage" for o in objects):
+        settle_views()
+    names = [o.Name for o in objects]
+    for name in names:
+        obj = doc.getObject(name)
+        if obj is None:
+            continue
+        if obj.TypeId == "TechDraw::DrawViewPart":
+            for page in [o for o in obj.InList if o.TypeId == "TechDraw::DrawPage"]:
+                page.removeView(obj)
+        elif obj.TypeId == "TechDraw::DrawPage":
+            # Emptied first, its template too: FreeCAD 1.0 removes a page's views itself when
+            # the page goes (DrawPage::unsetupObject) and crashed on views already removed.
+            page_views = list(obj.Views)
+            obj.Views = []
+            template = obj.Template
+            if template is not None and not isinstance(template, str):
+                obj.Template = None
+                if template not in objects:
+                    page_views.append(template)
+            remove_objects(doc, page_views)
+        doc.removeObject(name)
+
+
+def remove_children(sliceform):
+    """Removes everything the sliceform made."""
+    remove_objects(sliceform.Document, lookup.owned_objects(sliceform))
+
+
+def template_for(sheets):
+    """A blank SVG template of the sheet's size with the margin drawn, written once into
+    FreeCAD's user data folder (TechDraw copies it into the document)."""
+    w, h, m = sheets["width"], sheets["height"], sheets["margin"]
+    folder = os.path.join(FreeCAD.getUserAppDataDir(), "Sliceform", "templates")
+    os.makedirs(folder, exist_ok=True)
+    path = os.path.join(folder, "Sheet_{:g}x{:g}_m{:g}.svg".format(w, h, m))
+    if not os.path.isfile(path):
+        svg = (
+            '<?xml version="1.0" encoding="UTF-8"?>\n'
+            '<svg xmlns="http://www.w3.org/2000/svg" xmlns:freecad="http://www.freecadweb.org/wiki/index.php?title=Svg_Namespace" '
+            'width="{w:g}mm" height="{h:g}mm" viewBox="0 0 {w:g} {h:g}">\n'
+            '  <rect x="{m:g}" y="{m:g}" width="{iw:g}" height="{ih:g}" fill="none" stroke="#bbbbbb" '
+            'stroke-width="0.2" stroke-dasharray="2,2"/>\n</svg>\n'
+        ).format(w=w, h=h, m=m, iw=w - 2 * m, ih=h - 2 * m)
+        tmp = path + ".tmp"
+        with open(tmp, "w") as f:
+            f.write(svg)
+        os.replace(tmp, path)
+    return path
