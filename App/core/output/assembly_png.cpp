@@ -6,13 +6,19 @@
 #include <gp_Pnt.hxx>
 
 #include <algorithm>
-#include <array>
 #include <cmath>
+#include <cstdlib>
 #include <memory>
+#include <new>
+
+#if defined(__linux__)
+#include <sys/mman.h>
+#endif
 
 #include "assembly/fold.hpp"
 #include "support/atomic_file.hpp"
 #include "support/error.hpp"
+#include "support/parallel.hpp"
 
 namespace sliceform {
 namespace {
@@ -25,9 +31,22 @@ constexpr int kSupersample = 2;                 // drawn 2x2 larger, then averag
 constexpr double kMargin = 0.04;                // of the width, on every side
 constexpr double kMaxAspect = 1.5;              // height / width at most
 constexpr double kFade = 0.3;                   // how much paler the farthest paper is: depth cue
-constexpr float kEdge = 0.22f;                  // grey of the edge lines
+constexpr uint32_t kEdge = 0x383838;            // grey of the edge lines (0.22)
+constexpr uint32_t kWhite = 0xFFFFFF;
 
-using Rgb = std::array<float, 3>;
+// 0x00RRGGBB from channels in [0, 1].
+uint32_t packed(float r, float g, float b) {
+  const auto c = [](float v) { return static_cast<uint32_t>(std::lround(std::clamp(v, 0.0f, 1.0f) * 255)); };
+  return c(r) << 16 | c(g) << 8 | c(b);
+}
+
+// Each channel halfway between two colours.
+uint32_t halfway(uint32_t a, uint32_t b) {
+  uint32_t out = 0;
+  for (int shift = 0; shift <= 16; shift += 8)
+    out |= ((((a >> shift) & 255) + ((b >> shift) & 255) + 1) / 2) << shift;
+  return out;
+}
 
 // Screen axes and the direction towards the viewer, orthonormal, in model coordinates.
 struct View {
@@ -112,13 +131,56 @@ Placement place(const std::vector<Panel3>& panels, int widthPixels) {
   return pl;
 }
 
-// The supersampled picture: colour and depth per pixel.
+// Rows [lo, hi) of a raster: a band drawn on its own, beside the others.
+struct Rows {
+  int lo, hi;
+};
+
+// Memory for `n` values of a raster, unset. On Linux in transparent huge pages where the
+// system gives them on request (Debian's and Ubuntu's default): the first touch of each
+// 4 KB page faults, and on the CI machine touching 58 MB so took 250 ms, with 2 MB pages
+// 6 ms.
+template <class T>
+struct RasterMemory {
+  struct Free {
+    void operator()(T* p) const { std::free(p); }
+  };
+  static std::unique_ptr<T[], Free> make(size_t n) {
+    constexpr size_t kHuge = size_t(2) << 20;
+    const size_t bytes = std::max<size_t>(n * sizeof(T), 1);
+    const bool huge = bytes >= kHuge;
+    void* p = huge ? std::aligned_alloc(kHuge, (bytes + kHuge - 1) / kHuge * kHuge) : std::malloc(bytes);
+    if (!p) throw std::bad_alloc();
+#if defined(__linux__) && defined(MADV_HUGEPAGE)
+    if (huge)
+      madvise(p, (bytes + kHuge - 1) / kHuge * kHuge, MADV_HUGEPAGE);  // a hint: ignored where refused
+#endif
+    return std::unique_ptr<T[], Free>(static_cast<T*>(p));
+  }
+};
+
+// The supersampled picture: colour (0x00RRGGBB) and depth per pixel, eight bytes a pixel
+// (float colours took twice the memory). The 1200-pixel picture is 2400 x 3000 of them.
+// Made unset; clear() sets a band's rows, so the bands of drawAssembly touch their memory
+// on their own cores.
 struct Raster {
   int width, height;
-  std::vector<Rgb> colour;
-  std::vector<float> depth;
+  std::unique_ptr<uint32_t[], RasterMemory<uint32_t>::Free> colour;
+  std::unique_ptr<float[], RasterMemory<float>::Free> depth;
   Raster(int w, int h)
-      : width(w), height(h), colour(size_t(w) * h, Rgb{1, 1, 1}), depth(size_t(w) * h, -HUGE_VALF) {}
+      : width(w),
+        height(h),
+        colour(RasterMemory<uint32_t>::make(size_t(w) * h)),
+        depth(RasterMemory<float>::make(size_t(w) * h)) {}
+  Raster(const Raster& o) : Raster(o.width, o.height) {
+    std::copy_n(o.colour.get(), size_t(width) * height, colour.get());
+    std::copy_n(o.depth.get(), size_t(width) * height, depth.get());
+  }
+  void clear(Rows band) {
+    const size_t from = size_t(band.lo) * width, to = size_t(band.hi) * width;
+    std::fill(colour.get() + from, colour.get() + to, kWhite);
+    std::fill(depth.get() + from, depth.get() + to, -HUGE_VALF);
+  }
 };
 
 // Lambert with |n.l|: paper is seen from both sides. Mostly ambient, so both colours stay
@@ -134,7 +196,7 @@ float shade(const Vec3& normal, const View& view) {
 // goes inside the assembly.
 enum class Fill { Paper, Highlight, XRay };
 
-void fillPanel(Raster& r, const Placement& pl, const Panel3& panel, Fill mode = Fill::Paper) {
+void fillPanel(Raster& r, const Placement& pl, const Panel3& panel, Fill mode, Rows band) {
   const Vec3 n = normalized(panel.normal);
   const double facing = dot(n, pl.view.toViewer);
   if (std::fabs(facing) < 1e-6 || panel.loops.empty() || panel.loops[0].empty()) return;  // edge-on
@@ -155,9 +217,9 @@ void fillPanel(Raster& r, const Placement& pl, const Panel3& panel, Fill mode = 
       bottom = std::max(bottom, loops.back().back().y);
     }
   }
-  // Pixel rows whose centre y + 0.5 lies in [top, bottom).
-  const int row0 = std::max(0, static_cast<int>(std::ceil(top - 0.5)));
-  const int row1 = std::min(r.height, static_cast<int>(std::ceil(bottom - 0.5)));
+  // Pixel rows whose centre y + 0.5 lies in [top, bottom), in the band.
+  const int row0 = std::max(band.lo, static_cast<int>(std::ceil(top - 0.5)));
+  const int row1 = std::min(band.hi, static_cast<int>(std::ceil(bottom - 0.5)));
   if (row0 >= row1) return;
   std::vector<std::vector<double>> crossings(row1 - row0);
   for (const auto& loop : loops)
@@ -172,33 +234,33 @@ void fillPanel(Raster& r, const Placement& pl, const Panel3& panel, Fill mode = 
     }
   const float tone = shade(n, pl.view);
   const PaperColour paper = paperColour(panel.family);
+  const double fadePerDepth = kFade / std::max(pl.nearest - pl.farthest, 1e-9);
+  const double step = depthAt(1.5, 0.5) - depthAt(0.5, 0.5);  // depth is linear along a row
   for (int row = row0; row < row1; ++row) {
     std::vector<double>& xs = crossings[row - row0];
     std::sort(xs.begin(), xs.end());
     for (size_t i = 0; i + 1 < xs.size(); i += 2) {
       const int col0 = std::max(0, static_cast<int>(std::ceil(xs[i] - 0.5)));
       const int col1 = std::min(r.width, static_cast<int>(std::ceil(xs[i + 1] - 0.5)));
+      const double z0 = depthAt(col0 + 0.5, row + 0.5);
       for (int col = col0; col < col1; ++col) {
-        const double z = depthAt(col + 0.5, row + 0.5);
+        const double z = z0 + (col - col0) * step;
         const size_t at = size_t(row) * r.width + col;
-        const Rgb highlight{((kHighlight >> 16) & 255) / 255.0f, ((kHighlight >> 8) & 255) / 255.0f,
-                            (kHighlight & 255) / 255.0f};
         if (mode == Fill::XRay) {
-          if (z < r.depth[at] - 1e-3)
-            for (int k = 0; k < 3; ++k) r.colour[at][k] = 0.5f * r.colour[at][k] + 0.5f * highlight[k];
+          if (z < r.depth[at] - 1e-3) r.colour[at] = halfway(r.colour[at], kHighlight);
           continue;
         }
         // The highlight is filled again over itself: its own depth lets it through.
         if (mode == Fill::Highlight ? z < r.depth[at] - 1e-6 : z <= r.depth[at]) continue;
         r.depth[at] = static_cast<float>(z);
-        const float fade =
-            static_cast<float>(kFade * (pl.nearest - z) / std::max(pl.nearest - pl.farthest, 1e-9));
-        if (mode == Fill::Highlight)  // flat: every pixel of it is the colour a reader looks for
-          r.colour[at] = highlight;
-        else
-          r.colour[at] = {tone * float(paper.r) * (1 - fade) + fade,
-                          tone * float(paper.g) * (1 - fade) + fade,
-                          tone * float(paper.b) * (1 - fade) + fade};
+        if (mode == Fill::Highlight) {  // flat: every pixel of it is the colour a reader looks for
+          r.colour[at] = kHighlight;
+          continue;
+        }
+        const float fade = static_cast<float>(fadePerDepth * (pl.nearest - z));
+        r.colour[at] =
+            packed(tone * float(paper.r) * (1 - fade) + fade, tone * float(paper.g) * (1 - fade) + fade,
+                   tone * float(paper.b) * (1 - fade) + fade);
       }
     }
   }
@@ -206,17 +268,18 @@ void fillPanel(Raster& r, const Placement& pl, const Panel3& panel, Fill mode = 
 
 // Every pixel of a panel's outlines, drawn `thickness` wide, with the line's depth there.
 template <class Fn>
-void forEdgePixels(int width, int height, const Placement& pl, const Panel3& panel, int thickness, Fn&& fn) {
+void forEdgePixels(int width, Rows band, const Placement& pl, const Panel3& panel, int thickness, Fn&& fn) {
   auto stamp = [&](double x, double y, double z) {
     const int cx = static_cast<int>(std::floor(x - thickness / 2.0 + 0.5));
     const int cy = static_cast<int>(std::floor(y - thickness / 2.0 + 0.5));
-    for (int row = std::max(0, cy); row < std::min(height, cy + thickness); ++row)
+    for (int row = std::max(band.lo, cy); row < std::min(band.hi, cy + thickness); ++row)
       for (int col = std::max(0, cx); col < std::min(width, cx + thickness); ++col)
         fn(size_t(row) * width + col, z);
   };
   for (const auto& loop : panel.loops)
     for (size_t i = 0; i < loop.size(); ++i) {
       const Vec3 a = pl.project(loop[i]), b = pl.project(loop[(i + 1) % loop.size()]);
+      if (std::max(a.y, b.y) + thickness < band.lo || std::min(a.y, b.y) - thickness > band.hi) continue;
       const int steps = std::max(1, static_cast<int>(std::ceil(2 * std::hypot(b.x - a.x, b.y - a.y))));
       for (int s = 0; s <= steps; ++s) {
         const double t = static_cast<double>(s) / steps;
@@ -227,9 +290,9 @@ void forEdgePixels(int width, int height, const Placement& pl, const Panel3& pan
 
 // The outlines as dark lines, hidden where other paper is in front: a line passes the depth
 // test with a small bias, so it shows on its own panel.
-void drawEdges(Raster& r, const Placement& pl, const Panel3& panel, int thickness, double bias) {
-  forEdgePixels(r.width, r.height, pl, panel, thickness, [&](size_t at, double z) {
-    if (z + bias >= r.depth[at]) r.colour[at] = {kEdge, kEdge, kEdge};
+void drawEdges(Raster& r, const Placement& pl, const Panel3& panel, int thickness, double bias, Rows band) {
+  forEdgePixels(r.width, band, pl, panel, thickness, [&](size_t at, double z) {
+    if (z + bias >= r.depth[at]) r.colour[at] = kEdge;
   });
 }
 
@@ -238,9 +301,8 @@ void drawEdges(Raster& r, const Placement& pl, const Panel3& panel, int thicknes
 // after. A growing assembly then draws each panel's lines once, not again at every step.
 void keepEdges(std::vector<double>& lines, const Raster& r, const Placement& pl, const Panel3& panel,
                int thickness, double bias) {
-  forEdgePixels(r.width, r.height, pl, panel, thickness, [&](size_t at, double z) {
-    lines[at] = std::max(lines[at], z + bias);
-  });
+  forEdgePixels(r.width, {0, r.height}, pl, panel, thickness,
+                [&](size_t at, double z) { lines[at] = std::max(lines[at], z + bias); });
 }
 
 // Averages each kSupersample x kSupersample block into one opaque pixel.
@@ -249,20 +311,20 @@ Picture downsample(const Raster& r) {
   out.width = r.width / kSupersample;
   out.height = r.height / kSupersample;
   out.pixels.resize(size_t(out.width) * out.height);
-  for (int y = 0; y < out.height; ++y)
+  parallelFor(size_t(out.height), [&](size_t row) {
+    const int y = static_cast<int>(row);
     for (int x = 0; x < out.width; ++x) {
-      Rgb sum{0, 0, 0};
+      uint32_t sum[3] = {0, 0, 0};
       for (int dy = 0; dy < kSupersample; ++dy)
-        for (int dx = 0; dx < kSupersample; ++dx)
-          for (int k = 0; k < 3; ++k)
-            sum[k] += r.colour[size_t(y * kSupersample + dy) * r.width + x * kSupersample + dx][k];
-      uint32_t pixel = 0;
-      for (int k = 0; k < 3; ++k) {
-        const float v = std::clamp(sum[k] / (kSupersample * kSupersample), 0.0f, 1.0f);
-        pixel = pixel << 8 | static_cast<uint32_t>(std::lround(v * 255));
-      }
-      out.pixels[size_t(y) * out.width + x] = pixel;
+        for (int dx = 0; dx < kSupersample; ++dx) {
+          const uint32_t c = r.colour[size_t(y * kSupersample + dy) * r.width + x * kSupersample + dx];
+          for (int k = 0; k < 3; ++k) sum[k] += (c >> (16 - 8 * k)) & 255;
+        }
+      constexpr uint32_t n = kSupersample * kSupersample;
+      out.pixels[size_t(y) * out.width + x] =
+          (sum[0] + n / 2) / n << 16 | (sum[1] + n / 2) / n << 8 | (sum[2] + n / 2) / n;
     }
+  });
   return out;
 }
 
@@ -317,7 +379,7 @@ void checkWidth(int widthPixels) {
 struct GrowingAssembly::State {
   const std::vector<Panel3>& panels;
   Placement pl;
-  Raster built;              // every panel added so far, filled
+  Raster built;               // every panel added so far, filled
   std::vector<double> lines;  // and their outlines (keepEdges)
   int thickness;
   double bias;
@@ -330,19 +392,21 @@ GrowingAssembly::GrowingAssembly(const std::vector<Panel3>& panels, int widthPix
   state_.reset(new State{panels, pl, Raster(pl.width, pl.height),
                          std::vector<double>(size_t(pl.width) * pl.height, -HUGE_VAL), thickness,
                          edgeBias(pl, thickness)});
+  state_->built.clear({0, pl.height});
 }
 
 GrowingAssembly::~GrowingAssembly() = default;
 
 Picture GrowingAssembly::add(int panel) {
   State& s = *state_;
-  fillPanel(s.built, s.pl, s.panels[panel]);
+  const Rows all{0, s.built.height};
+  fillPanel(s.built, s.pl, s.panels[panel], Fill::Paper, all);
   keepEdges(s.lines, s.built, s.pl, s.panels[panel], s.thickness, s.bias);
   Raster r = s.built;
-  fillPanel(r, s.pl, s.panels[panel], Fill::Highlight);
+  fillPanel(r, s.pl, s.panels[panel], Fill::Highlight, all);
   for (size_t at = 0; at < s.lines.size(); ++at)
-    if (s.lines[at] > -HUGE_VAL && s.lines[at] >= r.depth[at]) r.colour[at] = {kEdge, kEdge, kEdge};
-  fillPanel(r, s.pl, s.panels[panel], Fill::XRay);
+    if (s.lines[at] > -HUGE_VAL && s.lines[at] >= r.depth[at]) r.colour[at] = kEdge;
+  fillPanel(r, s.pl, s.panels[panel], Fill::XRay, all);
   return downsample(r);
 }
 
@@ -350,9 +414,17 @@ Picture drawAssembly(const std::vector<Panel3>& panels, int widthPixels) {
   checkWidth(widthPixels);
   const Placement pl = place(panels, widthPixels);
   Raster raster(pl.width, pl.height);
-  for (const Panel3& panel : panels) fillPanel(raster, pl, panel);
   const int thickness = edgeThickness(widthPixels);
-  for (const Panel3& panel : panels) drawEdges(raster, pl, panel, thickness, edgeBias(pl, thickness));
+  // In bands of rows on every core: each band is every panel filled, then every outline,
+  // in its own rows, so the picture does not depend on how the bands are shared out.
+  const int bands = 16, rows = (pl.height + bands - 1) / bands;
+  parallelFor(bands, [&](size_t b) {
+    const Rows band{std::min(pl.height, static_cast<int>(b) * rows),
+                    std::min(pl.height, (static_cast<int>(b) + 1) * rows)};
+    raster.clear(band);
+    for (const Panel3& panel : panels) fillPanel(raster, pl, panel, Fill::Paper, band);
+    for (const Panel3& panel : panels) drawEdges(raster, pl, panel, thickness, edgeBias(pl, thickness), band);
+  });
   return downsample(raster);
 }
 

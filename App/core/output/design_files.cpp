@@ -86,6 +86,10 @@ DesignFiles DesignFilesWriter::finish(const Model& model, const DesignParams& pa
   const std::vector<SheetDrawing> sheets = sheetDrawings(d.layout);
   const std::vector<Panel3> panels = assemblyPanels(d.arrangement, d.patches, foldAngle_);
   clock.lap("export drawings");
+  // The finished sliceform, drawn once on every core (in bands of rows) before the files:
+  // assembly.png and the booklet's cover both show it.
+  const Picture picture = drawAssembly(panels);
+  clock.lap("export assembly picture");
   // The files are independent of each other: written on all cores, the longest first.
   // (cairo numbers the surfaces of the whole process from one counter; the SVG files,
   // which would carry that number, renumber theirs from 1.)
@@ -93,13 +97,11 @@ DesignFiles DesignFilesWriter::finish(const Model& model, const DesignParams& pa
     const char* stage;
     std::function<void()> write;
   };
-  Picture picture;
   std::vector<File> work{
       {"export booklet, in parallel",
        [&, booklet = path("instructions.pdf")] {
-         writeInstructionsPdf(d, panels, fs::path(model.source).filename().string(), booklet);
+         writeInstructionsPdf(d, panels, picture, fs::path(model.source).filename().string(), booklet);
        }},
-      {"export assembly PNG, in parallel", [&] { picture = drawAssembly(panels); }},
       {"export sheets PDF, in parallel",
        [&, pdf = path("sheets.pdf")] { writeSheetsPdf(sheets, d.layout.sheet, pdf); }},
       {"export sheets PNG, in parallel",

@@ -139,10 +139,9 @@ double text(cairo_t* cr, const std::string& s, double x, double y, double size, 
   return y;
 }
 
-void cover(cairo_t* cr, const Design& d, const std::vector<Panel3>& panels, const std::string& title) {
+void cover(cairo_t* cr, const Design& d, const Picture& whole, const std::string& title) {
   const double width = kPageW - 2 * kMargin;
   double y = text(cr, "Sliceform: " + title, kMargin, kMargin + 8, 8, width, true);
-  const Picture whole = drawAssembly(panels, 900);
   const double h = std::min(130.0, width * whole.height / whole.width);
   drawPicture(cr, whole, kMargin, y, width, h);
   y += h + 8;
@@ -208,8 +207,8 @@ std::vector<AssemblyStep> assemblySteps(const Design& d) {
   return steps;
 }
 
-void writeInstructionsPdf(const Design& d, const std::vector<Panel3>& panels, const std::string& title,
-                          const std::string& path) {
+void writeInstructionsPdf(const Design& d, const std::vector<Panel3>& panels, const Picture& whole,
+                          const std::string& title, const std::string& path) {
   const std::vector<AssemblyStep> steps = assemblySteps(d);
   std::vector<int> panelOf(d.patches.size(), -1), flatIndex(d.patches.size(), -1);
   for (size_t k = 0; k < d.layout.patches.size(); ++k)
@@ -223,7 +222,7 @@ void writeInstructionsPdf(const Design& d, const std::vector<Panel3>& panels, co
     cairo_pdf_surface_set_metadata(surface, CAIRO_PDF_METADATA_TITLE, ("Assembling " + title).c_str());
     drawAndFinish(surface, path, [&](cairo_t* cr) {
       cairo_scale(cr, kPointsPerMm, kPointsPerMm);  // millimetres, y down
-      cover(cr, d, panels, title);
+      cover(cr, d, whole, title);
       cairo_show_page(cr);
       const double cellW = (kPageW - 2 * kMargin) / kColumns;
       const double cellH = (kPageH - 2 * kMargin) / (kStepsPerPage / kColumns);

@@ -25,8 +25,10 @@ std::vector<AssemblyStep> assemblySteps(const Design& design);
 // Steps on one page of the booklet.
 constexpr int kStepsPerPage = 6;
 
-// Written atomically with cairo. `title` names the model. Throws Io.
-void writeInstructionsPdf(const Design& design, const std::vector<Panel3>& panels, const std::string& title,
-                          const std::string& path);
+// Written atomically with cairo. `title` names the model; `whole` is the finished
+// sliceform for the cover (drawAssembly of `panels`: the picture assembly.png shows, drawn
+// once for both). Throws Io.
+void writeInstructionsPdf(const Design& design, const std::vector<Panel3>& panels, const Picture& whole,
+                          const std::string& title, const std::string& path);
 
 }  // namespace sliceform
