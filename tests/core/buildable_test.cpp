@@ -19,6 +19,7 @@
 
 #include <cmath>
 #include <functional>
+#include <set>
 #include <vector>
 
 #include "output/report_json.hpp"
@@ -208,6 +209,46 @@ TEST(Buildable, DesigningAgainTakesOnlyStagesWhoseInputsAreTheSame) {
   thicker.slots.thickness = 0.5;
   EXPECT_NE(reportJson(model, first, before).dump(),
             reportJson(model, thicker, runDesign(model, thicker)).dump());
+}
+
+// A BRep solid edited the way the FreeCAD feature redesigns: the exact sections of the
+// cylinders the edit keeps are taken from the design before, not cut from the solid again,
+// and the design is the one made from nothing.
+TEST(Buildable, DesigningAgainTakesTheExactSectionsOfTheCylindersItKeeps) {
+  const Model model =
+      modelFromShape(test::makeBoxWithHoles(80, 60, 60, {{40, 30, 15}}), "box minus a cylinder");
+  DesignParams first;
+  first.arrangement.slices = 30;  // 2.67 and 2 mm apart: either slot keeps patches a slice and two apart
+  const Design before = runDesign(model, first);
+  ASSERT_GT(before.exactSections.byCylinder.size(), 0u);
+  EXPECT_EQ(before.exactSections.taken, 0);
+  for (const auto& [key, shape] : before.exactSections.byCylinder) EXPECT_FALSE(shape.IsNull());
+  // A wider slot (the spacing the cylinders keep is the same, unlike at a thickness of 0.5).
+  DesignParams wider = first;
+  wider.slots.clearance = 0.3;
+  const Design again = runDesign(model, wider, {}, {}, nullptr, &before);
+  const Design fresh = runDesign(model, wider);
+  ASSERT_EQ(again.arrangement.stagesTaken, 3);
+  // Every cylinder with a patch found its section: none was cut again.
+  std::set<std::pair<int, int>> used;
+  for (const ScaffoldPatch& p : again.arrangement.scaffold.patches)
+    used.insert({p.family == Family::U ? 0 : 1, p.cylinder});
+  EXPECT_EQ(again.exactSections.taken, static_cast<int>(used.size()));
+  EXPECT_EQ(fresh.exactSections.taken, 0);
+  EXPECT_EQ(reportJson(model, wider, again).dump(), reportJson(model, wider, fresh).dump());
+  EXPECT_NE(reportJson(model, first, before).dump(), reportJson(model, wider, fresh).dump());
+  ASSERT_EQ(again.patches.size(), fresh.patches.size());
+  for (size_t k = 0; k < again.patches.size(); ++k) {
+    EXPECT_TRUE(again.patches[k].exact) << k;
+    EXPECT_EQ(again.patches[k].exact, fresh.patches[k].exact) << k;
+    EXPECT_EQ(again.patches[k].outline.area(), fresh.patches[k].outline.area()) << k;
+  }
+  // Other slices are other cylinders: nothing is taken.
+  DesignParams more = first;
+  more.arrangement.slices = 32;
+  const Design other = runDesign(model, more, {}, {}, nullptr, &before);
+  EXPECT_EQ(other.arrangement.stagesTaken, 0);
+  EXPECT_EQ(other.exactSections.taken, 0);
 }
 
 }  // namespace

@@ -229,17 +229,22 @@ TopoDS_Shape facesFromRegion(const Region2d& region, const SliceFrame& frame, do
 }
 
 std::vector<PatchFace> exactPatches(const Model& model, const Arrangement& a, const Realization& r,
-                                    const Deadline& deadline) {
+                                    const Deadline& deadline, ExactSections* known) {
   const Scaffold& scaffold = a.scaffold;
   std::vector<PatchFace> out(scaffold.patches.size());
   const bool exact = model.kind == SourceKind::Brep && !model.shape.IsNull();
-  // Exact sections, each needed slice cut once.
+  ExactSections none;
+  std::map<std::pair<int, int>, TopoDS_Shape>& sections = (known ? *known : none).byCylinder;
+  // Exact sections of the cylinders with patches and none known, each needed slice cut once.
   std::map<int, ExactSlice> uSlices, vSlices;
-  std::map<std::pair<int, int>, TopoDS_Shape> sections;  // (family, cylinder) at position 0
-  std::vector<std::pair<int, int>> keys;                 // (family, cylinder) of every patch
+  std::vector<std::pair<int, int>> keys;  // (family, cylinder) of every patch
   for (const ScaffoldPatch& p : scaffold.patches) keys.push_back({p.family == Family::U ? 0 : 1, p.cylinder});
   std::sort(keys.begin(), keys.end());
   keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
+  const auto taken =
+      std::stable_partition(keys.begin(), keys.end(), [&](const auto& k) { return !sections.count(k); });
+  if (known) known->taken = static_cast<int>(keys.end() - taken);
+  keys.erase(taken, keys.end());
   std::vector<std::vector<int>> chosen(keys.size());
   if (exact)
     parallelFor(keys.size(), [&](size_t i) {
@@ -271,6 +276,8 @@ std::vector<PatchFace> exactPatches(const Model& model, const Arrangement& a, co
       auto& into = f == Family::U ? uSlices : vSlices;
       for (size_t i = 0; i < needed.size(); ++i) into[needed[i]] = cut[i];
     }
+    // Not tried (the deadline passed: left unknown, for a later design to cut), or built,
+    // or failed (a null shape: it would fail again).
     std::vector<std::optional<TopoDS_Shape>> built(keys.size());
     parallelFor(keys.size(), [&](size_t i) {
       const bool isU = keys[i].first == 0;
@@ -282,7 +289,7 @@ std::vector<PatchFace> exactPatches(const Model& model, const Arrangement& a, co
                               model.meshDeflection);
         });
       } catch (const Error&) {
-        built[i].reset();  // a slice missing (its family's sections failed), or a fuse failed
+        built[i] = TopoDS_Shape();  // a slice missing (its family's sections failed), or a fuse failed
       }
     });
     for (size_t i = 0; i < keys.size(); ++i)
@@ -299,7 +306,7 @@ std::vector<PatchFace> exactPatches(const Model& model, const Arrangement& a, co
       return;
     }
     const auto section0 = sections.find({p.family == Family::U ? 0 : 1, p.cylinder});
-    if (section0 == sections.end() || deadline.passed()) {
+    if (section0 == sections.end() || section0->second.IsNull() || deadline.passed()) {
       pf = polygonPatch(a, r, static_cast<int>(k), false);
       return;
     }

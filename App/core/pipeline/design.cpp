@@ -45,8 +45,11 @@ Design runDesign(const Model& model, DesignParams params, const Progress& progre
     return r;
   });
   const RealizationInput input = realizationInput(d.arrangement, model.meshDeflection);
-  d.patches = timed(d.timings, "exact patches", progress,
-                    [&] { return exactPatches(model, d.arrangement, d.realization, deadline); });
+  // The earlier design's exact sections where the cylinders are its own.
+  if (earlier && d.arrangement.stagesTaken == 3) d.exactSections = earlier->exactSections;
+  d.patches = timed(d.timings, "exact patches", progress, [&] {
+    return exactPatches(model, d.arrangement, d.realization, deadline, &d.exactSections);
+  });
   const std::vector<ScaffoldHinge>& hinges = d.arrangement.scaffold.hinges;
   d.emitted = timed(d.timings, "check", progress, [&] {
     const auto outlines = [&] {

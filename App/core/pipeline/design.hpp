@@ -37,6 +37,7 @@ struct Design {
   GrazeRepair grazes;  // patches moved off hinges no slot can cut
   Realization realization;
   std::vector<PatchFace> patches;  // exact faces at the popped-up pose
+  ExactSections exactSections;     // what the patches were cut from (BRep sources)
   Emitted emitted;                 // the fabrication contract, checked on the emitted outlines
   int exactReplaced = 0;           // exact faces that broke it, emitted as the search's polygons
   Certificate certificate;         // again, on the hinges whose slotted patches still meet
