@@ -274,6 +274,17 @@ void bindDesign(py::module_& m) {
           py::arg("fold_angle") = 90.0,
           "The assembled sliceform at a fold angle in degrees (90: popped up) as a BREP string: a "
           "compound of one face per patch, in the source's coordinates (after sizing)")
+      .def(
+          "patch_faces",
+          [](const PyDesign& d) {
+            py::list out;
+            for (const FlatPatch& flat : d.design.layout.patches)
+              out.append(brepFromShape(d.design.patches[flat.patch].shape));
+            return out;
+          },
+          "Per patch, in flat_patches' order: its paper (slots cut) as a BREP string, the exact face "
+          "where the source is a BRep, at the popped-up pose in the source's coordinates (after "
+          "sizing): the faces of assembly(90)")
       .def("flat_patches", &flatPatches,
            "Per patch: id, family, exact (from the BRep's exact sections), its plane (origin, normal, "
            "x_axis, y_axis) and the cut loops in "

@@ -317,7 +317,7 @@ class Sliceform:
             finally:
                 progress.stop()
             report = json.loads(design.report_json())
-            self.designs[key] = (design, report, None, None)
+            self.designs[key] = (design, report, None, None, None)
             while len(self.designs) > self.KEEP:
                 oldest = next(iter(self.designs))
                 self.designs.pop(oldest)
@@ -349,6 +349,10 @@ class Sliceform:
     def sheets(self, obj):
         """The nested sheets of the current design."""
         return self._cached(obj, 3, lambda d: d.sheets())
+
+    def patch_faces(self, obj):
+        """Each patch's paper as a BREP string, in flat_patches' order."""
+        return self._cached(obj, 4, lambda d: d.patch_faces())
 
     def sheet_drawings(self, obj):
         """Patch id -> its drawing on its sheet."""

@@ -1,22 +1,12 @@
 # SPDX-License-Identifier: LGPL-2.1-or-later
 """The core's flat geometry as FreeCAD geometry: line/arc/circle elements become Part
-curves; on exact patches, runs of short segments (the core's polygonised free-form curves)
-become one B-spline each, so a sketch holds a handful of curves, not hundreds of lines."""
+curves."""
 import math
 
 import FreeCAD
 import Part
 
 V = FreeCAD.Vector
-
-# A run of at least this many segments, each shorter than this, is a polygonised curve.
-SPLINE_MIN_SEGMENTS = 4
-SPLINE_MAX_SEGMENT = 2.0  # mm
-SPLINE_TOLERANCE = 0.005  # mm: well inside the core's 0.01 mm polygonisation
-
-
-def _length(e):
-    return math.hypot(e["b"][0] - e["a"][0], e["b"][1] - e["a"][1])
 
 
 def curve(e):
@@ -34,35 +24,6 @@ def curve(e):
     return Part.ArcOfCircle(circle, first, second)
 
 
-def _spline(points):
-    spline = Part.BSplineCurve()
-    spline.approximate(Points=[V(x, y, 0) for x, y in points], DegMin=3, DegMax=5, Tolerance=SPLINE_TOLERANCE)
-    return spline
-
-
-def loop_curves(loop, splines):
-    """Curves of one closed loop, with short-segment runs merged into B-splines if asked."""
-    if not splines:
-        return [curve(e) for e in loop]
-    out, run = [], []
-
-    def flush():
-        if len(run) >= SPLINE_MIN_SEGMENTS:
-            out.append(_spline([run[0]["a"]] + [e["b"] for e in run]))
-        else:
-            out.extend(curve(e) for e in run)
-        run.clear()
-
-    for e in loop:
-        if e["kind"] == "line" and _length(e) < SPLINE_MAX_SEGMENT:
-            run.append(e)
-        else:
-            flush()
-            out.append(curve(e))
-    flush()
-    return out
-
-
 def plane_placement(patch):
     """The placement that maps the patch's plane coordinates (x, y, 0) to 3D."""
     o, x, y, n = (V(*patch[k]) for k in ("origin", "x_axis", "y_axis", "normal"))
@@ -71,7 +32,7 @@ def plane_placement(patch):
 
 def patch_cuts(patch):
     """One patch's cut curves as drawn on its sheet, in sheet millimetres on the XY plane."""
-    return [c.toShape() for loop in patch["cut"] for c in loop_curves(loop, False)]
+    return [c.toShape() for loop in patch["cut"] for c in map(curve, loop)]
 
 
 # A patch's engraving goes to TechDraw in views of at most this many edges. TechDraw 0.20

@@ -100,12 +100,26 @@ class TestSliceformFeature(unittest.TestCase):
             self.assertNotIn("Touched", patch.State, patch.Label)  # built, nothing left to recompute
             self.assertTrue(patch.Shape.Wires and all(w.isClosed() for w in patch.Shape.Wires), patch.Label)
             self.assertEqual(len(patch.Shape.Faces), 1, patch.Label)
-        # The patches are the faces of the assembly at 90° (free-form edges are B-splines
-        # fitted within 0.005 mm, so areas agree to well within 1 %).
+        # The patches are the faces of the assembly at 90°, the core's own, placed on their
+        # planes: the same areas, and the same boxes where they stand.
         if sliceform.FoldAngle.Value == 90:
             areas = sorted(f.Area for f in sliceform.Shape.Faces)
             for mine, theirs in zip(sorted(p.Shape.Area for p in patches), areas):
-                self.assertAlmostEqual(mine, theirs, delta=0.01 * theirs)
+                self.assertAlmostEqual(mine, theirs, delta=1e-9 * theirs)
+
+            def box(shape):
+                b = shape.BoundBox
+                return (b.XMin, b.YMin, b.ZMin, b.XMax, b.YMax, b.ZMax)
+
+            faces = [box(f) for f in sliceform.Shape.Faces]
+            for patch in patches:
+                mine = box(patch.Shape)
+                gap = min(max(abs(a - b) for a, b in zip(mine, theirs)) for theirs in faces)
+                self.assertLess(gap, 1e-6, patch.Label)
+                # Its Placement is its plane: the face lies in the placement's XY plane.
+                up = patch.Placement.Rotation.multVec(FreeCAD.Vector(0, 0, 1))
+                self.assertAlmostEqual(abs(patch.Shape.Faces[0].normalAt(0, 0).dot(up)), 1, places=9)
+                self.assertAlmostEqual((patch.Shape.Vertexes[0].Point - patch.Placement.Base).dot(up), 0, places=6)
         pages = lookup.pages_of(sliceform)
         self.assertEqual(len(pages), sliceform.SheetCount)
         self.assertEqual(sum(len(lookup.patch_views(p)) for p in pages), sliceform.PatchCount)
