@@ -12,29 +12,30 @@ V = FreeCAD.Vector
 QT_TRANSLATE_NOOP = FreeCAD.Qt.QT_TRANSLATE_NOOP
 
 
-def new_patch(doc, sliceform, index):
-    obj = doc.addObject("Part::Part2DObjectPython", "{}_Patch{:03d}".format(sliceform.Name, index + 1))
-    children.Patch(obj)
-    obj.Sliceform = sliceform
-    obj.Index = index
+def _child(doc, kind, name, proxy, view, **links):
+    """A child object: its proxy, its links set in the order given, and, in the GUI, its view
+    provider, hidden (the sliceform shows the assembly)."""
+    obj = doc.addObject(kind, name)
+    proxy(obj)
+    for prop, value in links.items():
+        setattr(obj, prop, value)
     if FreeCAD.GuiUp:
         from sliceform_gui import view_provider
 
-        view_provider.ViewProviderPatch(obj.ViewObject)
+        getattr(view_provider, view)(obj.ViewObject)
         obj.ViewObject.Visibility = False
     return obj
+
+
+def new_patch(doc, sliceform, index):
+    name = "{}_Patch{:03d}".format(sliceform.Name, index + 1)
+    return _child(doc, "Part::Part2DObjectPython", name, children.Patch, "ViewProviderPatch", Sliceform=sliceform,
+                  Index=index)
 
 
 def new_sheet_patch(doc, patch):
-    obj = doc.addObject("Part::FeaturePython", patch.Name + "_Sheet")
-    children.SheetPatch(obj)
-    obj.Patch = patch
-    if FreeCAD.GuiUp:
-        from sliceform_gui import view_provider
-
-        view_provider.ViewProviderSheetPatch(obj.ViewObject)
-        obj.ViewObject.Visibility = False
-    return obj
+    return _child(doc, "Part::FeaturePython", patch.Name + "_Sheet", children.SheetPatch, "ViewProviderSheetPatch",
+                  Patch=patch)
 
 
 def new_page(doc, sliceform, index):
@@ -59,16 +60,9 @@ def new_page(doc, sliceform, index):
 
 
 def new_engraving(doc, patch, part):
-    obj = doc.addObject("Part::FeaturePython", patch.Name + "_Engraving" + ("" if part == 0 else str(part + 1)))
-    children.Engraving(obj)
-    obj.Patch = patch
-    obj.EngravingPart = part
-    if FreeCAD.GuiUp:
-        from sliceform_gui import view_provider
-
-        view_provider.ViewProviderSheetPatch(obj.ViewObject)
-        obj.ViewObject.Visibility = False
-    return obj
+    name = patch.Name + "_Engraving" + ("" if part == 0 else str(part + 1))
+    return _child(doc, "Part::FeaturePython", name, children.Engraving, "ViewProviderSheetPatch", Patch=patch,
+                  EngravingPart=part)
 
 
 def engrave_view_name(patch, part):
