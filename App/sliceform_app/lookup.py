@@ -43,12 +43,6 @@ def engraving_parts_of(patch):
     return sorted(found, key=lambda o: getattr(o, "EngravingPart", 0))
 
 
-def engraving_of(patch):
-    """The first (often the only) part of a patch's engraving."""
-    parts = engraving_parts_of(patch)
-    return parts[0] if parts else None
-
-
 def engravings_of(sliceform):
     """The engraving children of a sliceform, by patch and part."""
     return [e for patch in patches_of(sliceform) for e in engraving_parts_of(patch)]
