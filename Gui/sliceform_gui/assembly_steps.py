@@ -12,7 +12,11 @@ from sliceform_app import assembly_steps, lookup
 
 translate = FreeCAD.Qt.translate
 
-HIGHLIGHT = (0.91, 0.38, 0.24)  # the booklet's orange (#E8603C)
+# The new patch's colour in the 3D view: orange, more saturated than the booklet's #E8603C.
+# Patches stand on their planes, and one turned from the light is drawn at about half its
+# colour: the booklet's orange then came out a dull brown (145, 71, 51 on FreeCAD 1.0) that
+# a reader, and the GUI test's orange count, could miss.
+HIGHLIGHT = (1.0, 0.33, 0.0)
 
 current = None  # the open panel, for the GUI test
 
