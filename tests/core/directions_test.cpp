@@ -13,6 +13,7 @@
 
 #include <cmath>
 
+#include "output/report_json.hpp"
 #include "pipeline/directions.hpp"
 #include "test_support.hpp"
 
@@ -107,6 +108,33 @@ TEST(Directions, ModelOnItsSideIsStoodUp) {
   EXPECT_TRUE(c.buildable);
   EXPECT_FALSE(choice.why.empty());
   EXPECT_TRUE(d.directions.automatic);
+}
+
+// A FreeCAD edit of the slots (Thickness, Clearance) leaves the frames' estimates as they
+// were: the design made from an earlier one takes them, designs only the best frame again,
+// and is the design made afresh. A Slices edit estimates again.
+TEST(Directions, ASlotEditTakesTheEstimatesAndGivesTheFreshDesign) {
+  const Model model = modelFromShape(table(), "table");
+  DirectionChoice first, edited, fresh, resliced;
+  const Design a = designInBestFrame(model, coarse(), first);
+  EXPECT_FALSE(first.estimatesTaken);
+  DesignParams p = coarse();
+  p.slots.clearance += 0.1;
+  p.slots.thickness += 0.05;
+  const Design b = designInBestFrame(model, p, edited, {}, {}, nullptr, &a);
+  const Design c = designInBestFrame(model, p, fresh);
+  EXPECT_TRUE(edited.estimatesTaken);
+  EXPECT_FALSE(fresh.estimatesTaken);
+  ASSERT_EQ(edited.chosen, fresh.chosen);
+  DesignParams chosen = p;
+  chosen.arrangement.u = fresh.trials[fresh.chosen].u, chosen.arrangement.v = fresh.trials[fresh.chosen].v;
+  EXPECT_EQ(reportJson(model, chosen, b).dump(), reportJson(model, chosen, c).dump());
+  // The edit did change the design: the slots are wider.
+  EXPECT_NE(reportJson(model, chosen, b).dump(), reportJson(model, chosen, a).dump());
+  DesignParams q = coarse();
+  q.arrangement.slices = 40;
+  designInBestFrame(model, q, resliced, {}, {}, nullptr, &a);
+  EXPECT_FALSE(resliced.estimatesTaken);
 }
 
 }  // namespace

@@ -29,6 +29,10 @@ struct ArrangementParams {
   HingeRules hinges;
   StabilizeOptions stabilize;
 };
+inline bool operator==(const ArrangementParams& a, const ArrangementParams& b) {
+  return a.u == b.u && a.v == b.v && a.slices == b.slices && a.interval == b.interval && a.tauA == b.tauA &&
+         a.tauM == b.tauM && a.hinges == b.hinges && a.stabilize == b.stabilize;
+}
 
 struct Arrangement {
   ArrangementParams params;  // what it was made from

@@ -22,6 +22,10 @@ struct HingeRules {
   double minSlotEdgeDistance = 2;  // mm of material on each side of a slot
   double slotWidth = 0;            // mm, material thickness + clearance
 };
+inline bool operator==(const HingeRules& a, const HingeRules& b) {
+  return a.minHingeLength == b.minHingeLength && a.minSlotEdgeDistance == b.minSlotEdgeDistance &&
+         a.slotWidth == b.slotWidth;
+}
 
 class HingeTable {
  public:

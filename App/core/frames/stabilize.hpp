@@ -28,6 +28,9 @@ struct StabilizeOptions {
   // 0 = the least that keeps min_slot_edge_distance there (minPatchSpacing()).
   double minSpacing = 0;
 };
+inline bool operator==(const StabilizeOptions& a, const StabilizeOptions& b) {
+  return a.scheme == b.scheme && a.maxSpacing == b.maxSpacing && a.minSpacing == b.minSpacing;
+}
 
 // The spacing rule in force: `options.minSpacing`, or when 0, one slot width plus the
 // paper the design keeps beside any slot. Throws BadParameter for a value below that.

@@ -171,6 +171,16 @@ void estimate(const Model& model, const DesignParams& params, FrameTrial& t, std
   }
 }
 
+// A trial as its estimate left it: what its full design added, if it had one, dropped.
+FrameTrial asEstimated(const FrameTrial& trial) {
+  FrameTrial t = trial;
+  const FrameTrial none;
+  t.designed = none.designed, t.buildable = none.buildable, t.quality = none.quality;
+  t.patches = none.patches, t.sheets = none.sheets, t.designScore = none.designScore;
+  if (t.score >= 0) t.failure.clear();  // a design's failure; an estimate that failed scores -1
+  return t;
+}
+
 // Trials in the order they are preferred: score, then fewer patches, then as tried.
 std::vector<size_t> ranked(const std::vector<FrameTrial>& trials) {
   std::vector<size_t> order(trials.size());
@@ -265,25 +275,35 @@ Design designInBestFrame(const Model& model, DesignParams params, DirectionChoic
   choice = DirectionChoice{};
   choice.automatic = true;
   std::vector<FrameTrial>& trials = choice.trials;
-  const std::vector<UpAxis> axes = upAxes(model);
-  for (int a = 0; a < static_cast<int>(axes.size()); ++a)
-    for (FrameTrial& t : framesAbout(axes, a, kFirstTurns, std::size(kFirstTurns), trials))
+  choice.estimatedWith = params.arrangement;
+  // The estimates read the model and the arrangement parameters alone (estimate()): a
+  // design of the same model whose choice was estimated from the same ones lends them, so
+  // a Thickness, Clearance or Kerf edit in FreeCAD designs only the best frame again.
+  const DirectionChoice* was = earlier && earlier->directions.automatic ? &earlier->directions : nullptr;
+  if (was && was->estimatedWith == params.arrangement) {
+    choice.estimatesTaken = true;
+    for (const FrameTrial& w : was->trials) trials.push_back(asEstimated(w));
+  } else {
+    const std::vector<UpAxis> axes = upAxes(model);
+    for (int a = 0; a < static_cast<int>(axes.size()); ++a)
+      for (FrameTrial& t : framesAbout(axes, a, kFirstTurns, std::size(kFirstTurns), trials))
+        trials.push_back(std::move(t));
+    std::vector<std::exception_ptr> failures(trials.size());
+    parallelFor(trials.size(), [&](size_t k) { estimate(model, params, trials[k], failures[k]); });
+    // No frame at all: the model's own fault (an open mesh, too thin for the rules), said as
+    // the given frame would have said it.
+    if (std::all_of(trials.begin(), trials.end(), [](const FrameTrial& t) { return t.score < 0; }))
+      for (const std::exception_ptr& f : failures)
+        if (f) std::rethrow_exception(f);
+    // The families turned further about the best frame's up axis.
+    const size_t first = trials.size();
+    for (FrameTrial& t :
+         framesAbout(axes, trials[ranked(trials).front()].axis, kMoreTurns, std::size(kMoreTurns), trials))
       trials.push_back(std::move(t));
-  std::vector<std::exception_ptr> failures(trials.size());
-  parallelFor(trials.size(), [&](size_t k) { estimate(model, params, trials[k], failures[k]); });
-  // No frame at all: the model's own fault (an open mesh, too thin for the rules), said as
-  // the given frame would have said it.
-  if (std::all_of(trials.begin(), trials.end(), [](const FrameTrial& t) { return t.score < 0; }))
-    for (const std::exception_ptr& f : failures)
-      if (f) std::rethrow_exception(f);
-  // The families turned further about the best frame's up axis.
-  const size_t first = trials.size();
-  for (FrameTrial& t :
-       framesAbout(axes, trials[ranked(trials).front()].axis, kMoreTurns, std::size(kMoreTurns), trials))
-    trials.push_back(std::move(t));
-  failures.resize(trials.size());
-  parallelFor(trials.size() - first,
-              [&](size_t k) { estimate(model, params, trials[first + k], failures[first + k]); });
+    failures.resize(trials.size());
+    parallelFor(trials.size() - first,
+                [&](size_t k) { estimate(model, params, trials[first + k], failures[first + k]); });
+  }
   const double estimating =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 

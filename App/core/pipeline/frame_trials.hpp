@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "arrangement/arrange.hpp"
 #include "geometry/vec.hpp"
 #include "quality/quality.hpp"
 
@@ -34,6 +35,10 @@ struct DirectionChoice {
   std::vector<FrameTrial> trials;
   int chosen = -1;
   std::string why;  // one sentence for the summary
+  // What the estimates were made from (they read nothing else of the parameters), and
+  // whether they were taken from an earlier design's choice rather than made.
+  ArrangementParams estimatedWith;
+  bool estimatesTaken = false;
 };
 
 }  // namespace sliceform
