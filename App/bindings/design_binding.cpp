@@ -308,7 +308,7 @@ void bindDesign(py::module_& m) {
             result->params.sheet = run.params.sheet;
             py::gil_scoped_release release;
             const auto start = std::chrono::steady_clock::now();
-            result->design.layout = layOut(result->design, result->params.sheet);
+            result->design.layout = layOut(layoutInput(result->design), result->params.sheet);
             for (StageTime& t : result->design.timings)
               if (t.stage == "layout")
                 t.ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)

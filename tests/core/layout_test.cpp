@@ -303,14 +303,14 @@ TEST(Layout, NestedPatchesNeverOverlapAndStayOnTheSheet) {
 
 TEST(Layout, SmallSheetsTakeMoreOfThemAndStillNoOverlap) {
   // The sphere on 130 x 130 mm cards: several sheets, rotations in use.
-  const SheetLayout l = layOut(sphere(), sheetSpec("130x130", 4, 2));
+  const SheetLayout l = layOut(layoutInput(sphere()), sheetSpec("130x130", 4, 2));
   EXPECT_GT(l.packing.sheets, sphere().layout.packing.sheets);
   expectNoOverlaps(l);
   EXPECT_LE(l.packing.sheets, l.shelf.sheets);
 }
 
 TEST(Layout, SameInputSameLayout) {
-  const SheetLayout again = layOut(sphere(), sphere().layout.sheet);
+  const SheetLayout again = layOut(layoutInput(sphere()), sphere().layout.sheet);
   const SheetLayout &a = sphere().layout, &b = again;
   ASSERT_EQ(a.packing.placements.size(), b.packing.placements.size());
   for (size_t k = 0; k < a.packing.placements.size(); ++k) {
@@ -324,7 +324,7 @@ TEST(Layout, SameInputSameLayout) {
 
 TEST(Layout, PatchLargerThanTheSheetIsAClearError) {
   try {
-    layOut(sphere(), sheetSpec("100x100", 10, 3));
+    layOut(layoutInput(sphere()), sheetSpec("100x100", 10, 3));
     FAIL() << "a 120 mm sphere's patches were laid out on 80 mm of sheet";
   } catch (const Error& e) {
     EXPECT_EQ(e.kind(), ErrorKind::BadParameter);

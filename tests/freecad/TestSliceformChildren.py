@@ -54,6 +54,19 @@ class TestSliceformChildren(unittest.TestCase):
         self.doc.recompute()
         return box, cut
 
+    def box_with_cross_hole(self):
+        """A box 80 x 60 x 40 with a round hole along x: circles on the U patches, arcs where
+        slots cut them."""
+        box = self.doc.addObject("Part::Box", "Box")
+        box.Length, box.Width, box.Height = 80, 60, 40
+        hole = self.doc.addObject("Part::Cylinder", "Hole")
+        hole.Radius, hole.Height = 12, 100
+        hole.Placement = FreeCAD.Placement(FreeCAD.Vector(-10, 30, 20), FreeCAD.Rotation(FreeCAD.Vector(0, 1, 0), 90))
+        cut = self.doc.addObject("Part::Cut", "Cut")
+        cut.Base, cut.Tool = box, hole
+        self.doc.recompute()
+        return cut
+
     def create(self, source, **properties):
         from sliceform_app import feature
 
@@ -376,15 +389,7 @@ class TestSliceformChildren(unittest.TestCase):
 
         from sliceform_app import lookup
 
-        box = self.doc.addObject("Part::Box", "Box")
-        box.Length, box.Width, box.Height = 80, 60, 40
-        hole = self.doc.addObject("Part::Cylinder", "Hole")  # along x: circles on the U patches
-        hole.Radius, hole.Height = 12, 100
-        hole.Placement = FreeCAD.Placement(FreeCAD.Vector(-10, 30, 20), FreeCAD.Rotation(FreeCAD.Vector(0, 1, 0), 90))
-        cut = self.doc.addObject("Part::Cut", "Cut")
-        cut.Base, cut.Tool = box, hole
-        self.doc.recompute()
-        sliceform = self.create(cut, Slices=16)
+        sliceform = self.create(self.box_with_cross_hole(), Slices=16)
         drawings = sliceform.Proxy.sheet_drawings(sliceform)
         curved = 0
         for patch in lookup.patches_of(sliceform):
@@ -464,15 +469,7 @@ class TestSliceformChildren(unittest.TestCase):
         from TestSliceformFeature import wait_for_views
         from sliceform_app import lookup
 
-        box = self.doc.addObject("Part::Box", "Box")
-        box.Length, box.Width, box.Height = 80, 60, 40
-        hole = self.doc.addObject("Part::Cylinder", "Hole")  # along x: circles on the U patches
-        hole.Radius, hole.Height = 12, 100
-        hole.Placement = FreeCAD.Placement(FreeCAD.Vector(-10, 30, 20), FreeCAD.Rotation(FreeCAD.Vector(0, 1, 0), 90))
-        cut = self.doc.addObject("Part::Cut", "Cut")
-        cut.Base, cut.Tool = box, hole
-        self.doc.recompute()
-        sliceform = self.create(cut, Slices=16)
+        sliceform = self.create(self.box_with_cross_hole(), Slices=16)
         self.check_children(sliceform)
         page = lookup.pages_of(sliceform)[0]
         wait_for_views(page)

@@ -14,7 +14,6 @@
 #include <set>
 
 #include "layout/labels.hpp"
-#include "pipeline/design.hpp"
 #include "support/occt_guard.hpp"
 #include "support/parallel.hpp"
 #include "support/per_family.hpp"
@@ -97,7 +96,7 @@ std::vector<CutLoop> cutLoops(const TopoDS_Shape& shape, const PlaneMap& to2d) {
 }
 
 // The partner of every hinge of `patch` that is still a hinge once slotted.
-std::vector<LabelSpot> partnerSpots(const Design& d, int patch) {
+std::vector<LabelSpot> partnerSpots(const LayoutInput& d, int patch) {
   const Arrangement& a = d.arrangement;
   const Realization& r = d.realization;
   const Family family = a.scaffold.patches[patch].family;
@@ -106,7 +105,7 @@ std::vector<LabelSpot> partnerSpots(const Design& d, int patch) {
   std::vector<LabelSpot> spots;
   for (size_t h = 0; h < a.scaffold.hinges.size(); ++h) {
     const ScaffoldHinge& hinge = a.scaffold.hinges[h];
-    if (hinge.patch(family) != patch || !d.emitted.meets[h]) continue;
+    if (hinge.patch(family) != patch || !d.meets[h]) continue;
     const int partner = hinge.patch(other(family));
     const Slot slot = familySlot(family, r.slots[h]);
     const Interval& at = hinge.holds ? hinge.grip : hinge.w;
@@ -157,7 +156,7 @@ std::vector<Vec2> sample(const CutElement& e, double deflection) {
   return points;
 }
 
-FlatPatch flattenPatch(const Design& d, int k) {
+FlatPatch flattenPatch(const LayoutInput& d, int k) {
   const Arrangement& a = d.arrangement;
   const PatchPlane plane = patchPlane(a, k);
   FlatPatch flat;
@@ -188,14 +187,6 @@ FlatPatch flattenPatch(const Design& d, int k) {
   }
   for (const Label& l : flat.partners) flat.partnersOnLeaders += !l.leader.empty();
   return flat;
-}
-
-std::vector<FlatPatch> flattenPatches(const Design& d) {
-  // Patches are independent (OCCT on separate shapes, Clipper on separate paths): one per
-  // core, each written to its own slot, so the result does not depend on the schedule.
-  std::vector<FlatPatch> out(d.patches.size());
-  parallelFor(d.patches.size(), [&](size_t index) { out[index] = flattenPatch(d, static_cast<int>(index)); });
-  return out;
 }
 
 }  // namespace sliceform

@@ -8,13 +8,25 @@
 #include <string>
 #include <vector>
 
+#include "arrangement/arrange.hpp"
 #include "exact/patch_faces.hpp"
 #include "frames/scaffold.hpp"
 #include "geometry/region2d.hpp"
+#include "realization/realize.hpp"
 
 namespace sliceform {
 
-struct Design;
+// What the layout reads of a design, as realizationInput() narrows the arrangement for the
+// realization (pipeline/design.hpp: layoutInput()): the arrangement (patch ids, planes and
+// frames), the realization (slots, assembly order, kerf), which scaffold hinges the emitted
+// patches still meet (Emitted::meets), and the patches' faces. It refers to them: the
+// design must outlive it.
+struct LayoutInput {
+  const Arrangement& arrangement;
+  const Realization& realization;
+  const std::vector<char>& meets;
+  const std::vector<PatchFace>& patches;
+};
 
 // One piece of a cut loop, in the loop's direction: a segment from `a` to `b`, an arc
 // from angle `start` to `end` about `centre` (counter-clockwise when `ccw`, radians), or a
@@ -55,11 +67,10 @@ struct FlatPatch {
   Label stepLabel;                      // "#step" beside the id (no strokes when it has no room)
 };
 
-// Every patch of a design laid flat and labelled; `kerf` moves the cut paths as
-// SlotParams::kerf says (outline and labels stay the paper's).
-std::vector<FlatPatch> flattenPatches(const Design& design);
-// One of them (patch index into design.patches); patches are independent of each other.
-FlatPatch flattenPatch(const Design& design, int patch);
+// One patch of a design laid flat and labelled (patch: an index into input.patches); the
+// kerf moves the cut paths as SlotParams::kerf says (outline and labels stay the paper's).
+// Patches are independent of each other.
+FlatPatch flattenPatch(const LayoutInput& input, int patch);
 
 // A point of a cut element at parameter t in [0, 1] (used for sampling and bounds).
 Vec2 pointAt(const CutElement& e, double t);

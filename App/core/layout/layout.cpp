@@ -5,7 +5,6 @@
 #include <exception>
 
 #include "layout/labels.hpp"
-#include "pipeline/design.hpp"
 #include "support/parallel.hpp"
 
 namespace sliceform {
@@ -41,24 +40,24 @@ Label upright(const Label& l, const Placement& at) {
 
 }  // namespace
 
-SheetLayout layOut(const Design& design, const SheetSpec& sheet) {
+SheetLayout layOut(const LayoutInput& input, const SheetSpec& sheet) {
   SheetLayout layout;
   layout.sheet = sheet;
   std::vector<Region2d> outlines;
   std::vector<std::string> names;
-  for (size_t k = 0; k < design.patches.size(); ++k) {
-    outlines.push_back(design.patches[k].outline);
-    names.push_back(patchId(design.arrangement.scaffold, static_cast<int>(k)));
+  for (size_t k = 0; k < input.patches.size(); ++k) {
+    outlines.push_back(input.patches[k].outline);
+    names.push_back(patchId(input.arrangement.scaffold, static_cast<int>(k)));
   }
   // Nesting reads only the outlines, not the labels: it is one more task beside the
   // patches, handed out first (it takes longest), so one core nests while the others
   // flatten and label the patches. Every task writes its own slot: the result does not
   // depend on the schedule. A flattening error still comes first, as when nesting followed.
-  layout.patches.resize(design.patches.size());
+  layout.patches.resize(input.patches.size());
   std::exception_ptr nestFailure;
   parallelFor(layout.patches.size() + 1, [&](size_t task) {
     if (task > 0) {
-      layout.patches[task - 1] = flattenPatch(design, static_cast<int>(task - 1));
+      layout.patches[task - 1] = flattenPatch(input, static_cast<int>(task - 1));
       return;
     }
     try {

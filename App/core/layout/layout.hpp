@@ -10,8 +10,6 @@
 
 namespace sliceform {
 
-struct Design;
-
 struct SheetLayout {
   SheetSpec sheet;
   std::vector<FlatPatch> patches;  // in patch order
@@ -19,7 +17,7 @@ struct SheetLayout {
   Packing shelf;                   // the paper's shelf layout, for comparison only
 };
 
-SheetLayout layOut(const Design& design, const SheetSpec& sheet);
+SheetLayout layOut(const LayoutInput& input, const SheetSpec& sheet);
 
 // Everything drawn on one sheet, in sheet coordinates (mm, origin bottom-left, y up).
 struct SheetDrawing {

@@ -83,8 +83,12 @@ Design runDesign(const Model& model, DesignParams params, const Progress& progre
     return certify(bars, pins);
   });
   if (patchesReady) patchesReady(d);
-  d.layout = timed(d.timings, "layout", progress, [&] { return layOut(d, params.sheet); });
+  d.layout = timed(d.timings, "layout", progress, [&] { return layOut(layoutInput(d), params.sheet); });
   return d;
+}
+
+LayoutInput layoutInput(const Design& d) {
+  return {d.arrangement, d.realization, d.emitted.meets, d.patches};
 }
 
 std::vector<std::string> designProblems(const Design& d) {

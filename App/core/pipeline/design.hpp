@@ -61,6 +61,9 @@ Design runDesign(const Model& model, DesignParams params, const Progress& progre
                  const PatchesReady& patchesReady = {}, const Deadline* deadline = nullptr,
                  const Design* earlier = nullptr);
 
+// What the layout reads of it (layOut, flattenPatch): refers to the design's own members.
+LayoutInput layoutInput(const Design& design);
+
 // Why the design cannot be built, one clause per broken rule naming what helps; empty when
 // it can. The CLI's exit code and the FreeCAD feature's state both come from it.
 std::vector<std::string> designProblems(const Design& design);
