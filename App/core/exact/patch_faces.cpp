@@ -30,6 +30,7 @@
 #include "support/error.hpp"
 #include "support/occt_guard.hpp"
 #include "support/parallel.hpp"
+#include "support/per_family.hpp"
 
 namespace sliceform {
 namespace {
@@ -236,9 +237,9 @@ std::vector<PatchFace> exactPatches(const Model& model, const Arrangement& a, co
   ExactSections none;
   std::map<std::pair<int, int>, TopoDS_Shape>& sections = (known ? *known : none).byCylinder;
   // Exact sections of the cylinders with patches and none known, each needed slice cut once.
-  std::map<int, ExactSlice> uSlices, vSlices;
+  PerFamily<std::map<int, ExactSlice>> exactSlices;
   std::vector<std::pair<int, int>> keys;  // (family, cylinder) of every patch
-  for (const ScaffoldPatch& p : scaffold.patches) keys.push_back({p.family == Family::U ? 0 : 1, p.cylinder});
+  for (const ScaffoldPatch& p : scaffold.patches) keys.push_back({index(p.family), p.cylinder});
   std::sort(keys.begin(), keys.end());
   keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
   const auto taken =
@@ -248,17 +249,15 @@ std::vector<PatchFace> exactPatches(const Model& model, const Arrangement& a, co
   std::vector<std::vector<int>> chosen(keys.size());
   if (exact)
     parallelFor(keys.size(), [&](size_t i) {
-      const bool isU = keys[i].first == 0;
-      chosen[i] = slicesAddingToUnion((isU ? a.uCylinders : a.vCylinders)[keys[i].second], isU ? a.u : a.v,
-                                      model.meshDeflection);
+      const Family f = familyAt(keys[i].first);
+      chosen[i] = slicesAddingToUnion(a.cylinders(f)[keys[i].second], a.slices(f), model.meshDeflection);
     });
   if (exact) {
     for (const Family f : {Family::U, Family::V}) {
-      const SliceSet& set = f == Family::U ? a.u : a.v;
+      const SliceSet& set = a.slices(f);
       std::vector<int> needed;
       for (size_t i = 0; i < keys.size(); ++i)
-        if ((keys[i].first == 0) == (f == Family::U))
-          needed.insert(needed.end(), chosen[i].begin(), chosen[i].end());
+        if (familyAt(keys[i].first) == f) needed.insert(needed.end(), chosen[i].begin(), chosen[i].end());
       std::sort(needed.begin(), needed.end());
       needed.erase(std::unique(needed.begin(), needed.end()), needed.end());
       std::vector<double> positions;
@@ -273,20 +272,18 @@ std::vector<PatchFace> exactPatches(const Model& model, const Arrangement& a, co
       } catch (const Error&) {
         continue;
       }
-      auto& into = f == Family::U ? uSlices : vSlices;
-      for (size_t i = 0; i < needed.size(); ++i) into[needed[i]] = cut[i];
+      for (size_t i = 0; i < needed.size(); ++i) exactSlices[f][needed[i]] = cut[i];
     }
     // Not tried (the deadline passed: left unknown, for a later design to cut), or built,
     // or failed (a null shape: it would fail again).
     std::vector<std::optional<TopoDS_Shape>> built(keys.size());
     parallelFor(keys.size(), [&](size_t i) {
-      const bool isU = keys[i].first == 0;
-      const Cylinder& c = (isU ? a.uCylinders : a.vCylinders)[keys[i].second];
+      const Family f = familyAt(keys[i].first);
+      const Cylinder& c = a.cylinders(f)[keys[i].second];
       if (deadline.passed()) return;
       try {
         built[i] = occtGuard("building an exact patch", [&] {
-          return exactSection(c, chosen[i], isU ? uSlices : vSlices, isU ? a.u.frame : a.v.frame,
-                              model.meshDeflection);
+          return exactSection(c, chosen[i], exactSlices[f], a.slices(f).frame, model.meshDeflection);
         });
       } catch (const Error&) {
         built[i] = TopoDS_Shape();  // a slice missing (its family's sections failed), or a fuse failed
@@ -299,13 +296,13 @@ std::vector<PatchFace> exactPatches(const Model& model, const Arrangement& a, co
   const double crumb = std::max(0.5, r.params.width() * r.params.width());
   parallelFor(scaffold.patches.size(), [&](size_t k) {
     const ScaffoldPatch& p = scaffold.patches[k];
-    const SliceFrame& frame = p.family == Family::U ? a.u.frame : a.v.frame;
+    const SliceFrame& frame = a.slices(p.family).frame;
     PatchFace& pf = out[k];
     if (!exact) {
       pf = polygonPatch(a, r, static_cast<int>(k));
       return;
     }
-    const auto section0 = sections.find({p.family == Family::U ? 0 : 1, p.cylinder});
+    const auto section0 = sections.find({index(p.family), p.cylinder});
     if (section0 == sections.end() || section0->second.IsNull() || deadline.passed()) {
       pf = polygonPatch(a, r, static_cast<int>(k), false);
       return;
@@ -341,7 +338,7 @@ PatchFace polygonPatch(const Arrangement& a, const Realization& r, int k, bool s
   const ScaffoldPatch& p = a.scaffold.patches[k];
   PatchFace pf;
   pf.outline = simplify ? simplified(r.slotted[k], kOutlineDeflection) : r.slotted[k];
-  pf.shape = facesFromRegion(pf.outline, p.family == Family::U ? a.u.frame : a.v.frame, p.position);
+  pf.shape = facesFromRegion(pf.outline, a.slices(p.family).frame, p.position);
   pf.pieces = static_cast<int>(pf.outline.components().size());
   return pf;
 }

@@ -287,10 +287,11 @@ bool movePatch(Scaffold& s, const SliceSet& u, const SliceSet& v, const std::vec
                const std::vector<Cylinder>& vCylinders, const HingeTable& table, double minSpacing, int k,
                int slice) {
   ScaffoldPatch& p = s.patches[k];
-  const auto& cylinders = p.family == Family::U ? uCylinders : vCylinders;
+  const std::vector<Cylinder>& cylinders =
+      PerFamily<const std::vector<Cylinder>&>{uCylinders, vCylinders}[p.family];
   const Cylinder& c = cylinders[p.cylinder];
   if (slice < c.firstSlice || slice > c.lastSlice) return false;
-  const double position = (p.family == Family::U ? u : v).slices[slice].position;
+  const double position = PerFamily<const SliceSet&>{u, v}[p.family].slices[slice].position;
   for (int q = 0; q < static_cast<int>(s.patches.size()); ++q) {
     const ScaffoldPatch& o = s.patches[q];
     if (q == k || o.family != p.family) continue;
@@ -339,7 +340,7 @@ std::string patchId(const Scaffold& scaffold, int patch) {
   const Family f = scaffold.patches[patch].family;
   int number = 0;
   for (int k = 0; k < patch; ++k) number += scaffold.patches[k].family == f ? 1 : 0;
-  return (f == Family::U ? "U" : "V") + std::to_string(number);
+  return familyName(f) + std::to_string(number);
 }
 
 Scaffold stabilize(const SliceSet& u, const SliceSet& v, const std::vector<Cylinder>& uCylinders,

@@ -5,6 +5,7 @@
 
 #include "support/atomic_file.hpp"
 #include "support/error.hpp"
+#include "support/per_family.hpp"
 
 namespace sliceform {
 namespace {
@@ -118,7 +119,7 @@ json reportJson(const Model& model, const DesignParams& params, const Design& d)
     const Placement& at = d.layout.packing.placements[k];
     patches.push_back(
         {{"id", patchId(a.scaffold, k)},
-         {"family", sp.family == Family::U ? "U" : "V"},
+         {"family", familyName(sp.family)},
          {"cylinder", sp.cylinder},
          {"slice", sp.slice},
          {"origin", vec(plane.origin)},

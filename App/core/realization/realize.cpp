@@ -13,6 +13,7 @@
 #include "frames/hinge_table.hpp"
 #include "realization/interlock.hpp"
 #include "support/parallel.hpp"
+#include "support/per_family.hpp"
 
 namespace sliceform {
 namespace {
@@ -187,7 +188,7 @@ class Search {
 
   MemoKey memoKey(int p, const std::vector<SlotPair>& slots) const {
     const PatchShape& ps = in_.patches[p];
-    MemoKey key{ps.family == Family::U ? 0 : 1, ps.cylinder, ps.position, {}};
+    MemoKey key{index(ps.family), ps.cylinder, ps.position, {}};
     for (const PatchHinge& h : patchHinges(in_, slots, p))
       std::get<3>(key).emplace_back(h.x, h.w.lo, h.w.hi, h.root, static_cast<int>(h.slot));
     return key;
@@ -486,8 +487,7 @@ class Search {
       for (int p = 0; p < n_; ++p) {
         if (placed[p]) continue;
         const auto key = [&](int q) {
-          return std::make_tuple(-links[q], in_.patches[q].family == Family::U ? 0 : 1,
-                                 in_.patches[q].position);
+          return std::make_tuple(-links[q], index(in_.patches[q].family), in_.patches[q].position);
         };
         if (pick < 0 || key(p) < key(pick)) pick = p;
       }
@@ -556,7 +556,7 @@ std::vector<std::shared_ptr<const SlotCutter>> patchCutters(const RealizationInp
   const size_t n = in.patches.size();
   const auto wanted = [&](size_t p) { return needed.empty() || needed[p]; };
   const auto key = [&](size_t p) {
-    return std::make_pair(in.patches[p].family == Family::U ? 0 : 1, in.patches[p].cylinder);
+    return std::make_pair(index(in.patches[p].family), in.patches[p].cylinder);
   };
   const auto cached = [&](size_t p) { return cache && in.patches[p].cylinder >= 0; };
   std::vector<std::shared_ptr<const SlotCutter>> out(n);

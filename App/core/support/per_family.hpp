@@ -13,6 +13,18 @@ constexpr Family other(Family f) {
   return f == Family::U ? Family::V : Family::U;
 }
 
+// 0 for U, 1 for V: where a family is a number (keys, array axes).
+constexpr int index(Family f) {
+  return f == Family::U ? 0 : 1;
+}
+constexpr Family familyAt(int index) {
+  return index == 0 ? Family::U : Family::V;
+}
+// "U" or "V", as patch ids and report.json name the families.
+constexpr const char* familyName(Family f) {
+  return f == Family::U ? "U" : "V";
+}
+
 // T may be a reference, to look up two objects held elsewhere.
 template <class T>
 struct PerFamily {

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 #include "verify/certificate.hpp"
+#include "support/per_family.hpp"
 
 #include <Eigen/Dense>
 #include <Eigen/Sparse>
@@ -39,7 +40,7 @@ Certificate certify(const std::vector<BarPatch>& patches, const std::vector<PinH
   // looked identical, and a stable scaffold was called wobbly).
   double lo[2] = {HUGE_VAL, HUGE_VAL}, hi[2] = {-HUGE_VAL, -HUGE_VAL};
   for (const BarPatch& p : patches) {
-    const int axis = p.family == Family::U ? 0 : 1;
+    const int axis = index(p.family);
     lo[axis] = std::min(lo[axis], p.position);
     hi[axis] = std::max(hi[axis], p.position);
   }
