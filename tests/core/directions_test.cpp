@@ -112,8 +112,9 @@ TEST(Directions, ModelOnItsSideIsStoodUp) {
 
 // A FreeCAD edit of the slots (Thickness, Clearance) leaves the frames' estimates as they
 // were: the design made from an earlier one takes them, designs only the best frame again,
-// and is the design made afresh. A Slices edit estimates again.
-TEST(Directions, ASlotEditTakesTheEstimatesAndGivesTheFreshDesign) {
+// and is the design made afresh. So does a Slices edit above the estimates' slices; one
+// below them estimates again.
+TEST(Directions, AnEditTheEstimatesDoNotReadTakesThemAndGivesTheFreshDesign) {
   const Model model = modelFromShape(table(), "table");
   DirectionChoice first, edited, fresh, resliced;
   const Design a = designInBestFrame(model, coarse(), first);
@@ -131,9 +132,18 @@ TEST(Directions, ASlotEditTakesTheEstimatesAndGivesTheFreshDesign) {
   EXPECT_EQ(reportJson(model, chosen, b).dump(), reportJson(model, chosen, c).dump());
   // The edit did change the design: the slots are wider.
   EXPECT_NE(reportJson(model, chosen, b).dump(), reportJson(model, chosen, a).dump());
-  DesignParams q = coarse();
-  q.arrangement.slices = 40;
-  designInBestFrame(model, q, resliced, {}, {}, nullptr, &a);
+  DesignParams more = coarse();
+  more.arrangement.slices = kEstimateSlices + 4;  // coarse() has 48: both above
+  DirectionChoice again, afresh;
+  const Design d = designInBestFrame(model, more, again, {}, {}, nullptr, &a);
+  const Design e = designInBestFrame(model, more, afresh);
+  EXPECT_TRUE(again.estimatesTaken);
+  ASSERT_EQ(again.chosen, afresh.chosen);
+  more.arrangement.u = afresh.trials[afresh.chosen].u, more.arrangement.v = afresh.trials[afresh.chosen].v;
+  EXPECT_EQ(reportJson(model, more, d).dump(), reportJson(model, more, e).dump());
+  DesignParams fewer = coarse();
+  fewer.arrangement.slices = kEstimateSlices - 10;
+  designInBestFrame(model, fewer, resliced, {}, {}, nullptr, &a);
   EXPECT_FALSE(resliced.estimatesTaken);
 }
 

@@ -151,13 +151,22 @@ bool sameFrame(const FrameTrial& a, const FrameTrial& b) {
   return std::abs(dot(a.u, b.u)) > 1 - 1e-9 && std::abs(dot(a.v, b.v)) > 1 - 1e-9;
 }
 
-// The arrangement at kEstimateSlices in the trial's frame, scored; `failure` gets what it
-// threw.
-void estimate(const Model& model, const DesignParams& params, FrameTrial& t, std::exception_ptr& failure) {
-  ArrangementParams p = params.arrangement;
-  p.u = t.u, p.v = t.v;
+// What an estimate arranges, but its directions (each trial's own): the given arrangement
+// parameters at no more than kEstimateSlices slices a direction. Edits that change none of
+// it (Thickness, Clearance, Kerf; Slices from 128 to 129) leave every estimate as it was.
+ArrangementParams estimateParams(ArrangementParams p) {
+  p.u = ArrangementParams{}.u, p.v = ArrangementParams{}.v;
   p.slices = std::min(p.slices, kEstimateSlices);
   p.interval = 0;
+  return p;
+}
+
+// The arrangement at kEstimateSlices in the trial's frame, scored; `failure` gets what it
+// threw.
+void estimate(const Model& model, const ArrangementParams& params, FrameTrial& t,
+              std::exception_ptr& failure) {
+  ArrangementParams p = params;
+  p.u = t.u, p.v = t.v;
   try {
     const Arrangement a = arrange(model, p);
     t.estimate = a.quality;
@@ -275,12 +284,13 @@ Design designInBestFrame(const Model& model, DesignParams params, DirectionChoic
   choice = DirectionChoice{};
   choice.automatic = true;
   std::vector<FrameTrial>& trials = choice.trials;
-  choice.estimatedWith = params.arrangement;
-  // The estimates read the model and the arrangement parameters alone (estimate()): a
-  // design of the same model whose choice was estimated from the same ones lends them, so
-  // a Thickness, Clearance or Kerf edit in FreeCAD designs only the best frame again.
+  const ArrangementParams estimated = estimateParams(params.arrangement);
+  choice.estimatedWith = estimated;
+  // The estimates read the model and estimateParams() alone: a design of the same model
+  // whose choice was estimated from the same ones lends them, so a Thickness, Clearance,
+  // Kerf or Slices edit in FreeCAD designs only the best frame again.
   const DirectionChoice* was = earlier && earlier->directions.automatic ? &earlier->directions : nullptr;
-  if (was && was->estimatedWith == params.arrangement) {
+  if (was && was->estimatedWith == estimated) {
     choice.estimatesTaken = true;
     for (const FrameTrial& w : was->trials) trials.push_back(asEstimated(w));
   } else {
@@ -289,7 +299,7 @@ Design designInBestFrame(const Model& model, DesignParams params, DirectionChoic
       for (FrameTrial& t : framesAbout(axes, a, kFirstTurns, std::size(kFirstTurns), trials))
         trials.push_back(std::move(t));
     std::vector<std::exception_ptr> failures(trials.size());
-    parallelFor(trials.size(), [&](size_t k) { estimate(model, params, trials[k], failures[k]); });
+    parallelFor(trials.size(), [&](size_t k) { estimate(model, estimated, trials[k], failures[k]); });
     // No frame at all: the model's own fault (an open mesh, too thin for the rules), said as
     // the given frame would have said it.
     if (std::all_of(trials.begin(), trials.end(), [](const FrameTrial& t) { return t.score < 0; }))
@@ -302,7 +312,7 @@ Design designInBestFrame(const Model& model, DesignParams params, DirectionChoic
       trials.push_back(std::move(t));
     failures.resize(trials.size());
     parallelFor(trials.size() - first,
-                [&](size_t k) { estimate(model, params, trials[first + k], failures[first + k]); });
+                [&](size_t k) { estimate(model, estimated, trials[first + k], failures[first + k]); });
   }
   const double estimating =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();

@@ -35,8 +35,9 @@ struct DirectionChoice {
   std::vector<FrameTrial> trials;
   int chosen = -1;
   std::string why;  // one sentence for the summary
-  // What the estimates were made from (they read nothing else of the parameters), and
-  // whether they were taken from an earlier design's choice rather than made.
+  // What the estimates were made from (the arrangement parameters at the estimates' slices,
+  // directions left out: they read nothing else), and whether they were taken from an
+  // earlier design's choice rather than made.
   ArrangementParams estimatedWith;
   bool estimatesTaken = false;
 };
