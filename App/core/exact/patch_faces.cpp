@@ -239,7 +239,7 @@ std::vector<PatchFace> exactPatches(const Model& model, const Arrangement& a, co
   // Exact sections of the cylinders with patches and none known, each needed slice cut once.
   PerFamily<std::map<int, ExactSlice>> exactSlices;
   std::vector<std::pair<int, int>> keys;  // (family, cylinder) of every patch
-  for (const ScaffoldPatch& p : scaffold.patches) keys.push_back({index(p.family), p.cylinder});
+  for (const ScaffoldPatch& p : scaffold.patches) keys.push_back({familyIndex(p.family), p.cylinder});
   std::sort(keys.begin(), keys.end());
   keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
   const auto taken =
@@ -302,7 +302,7 @@ std::vector<PatchFace> exactPatches(const Model& model, const Arrangement& a, co
       pf = polygonPatch(a, r, static_cast<int>(k));
       return;
     }
-    const auto section0 = sections.find({index(p.family), p.cylinder});
+    const auto section0 = sections.find({familyIndex(p.family), p.cylinder});
     if (section0 == sections.end() || section0->second.IsNull() || deadline.passed()) {
       pf = polygonPatch(a, r, static_cast<int>(k), false);
       return;

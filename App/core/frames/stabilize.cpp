@@ -287,11 +287,12 @@ bool movePatch(Scaffold& s, const SliceSet& u, const SliceSet& v, const std::vec
                const std::vector<Cylinder>& vCylinders, const HingeTable& table, double minSpacing, int k,
                int slice) {
   ScaffoldPatch& p = s.patches[k];
-  const std::vector<Cylinder>& cylinders =
-      PerFamily<const std::vector<Cylinder>&>{uCylinders, vCylinders}[p.family];
+  const PerFamily<const SliceSet&> sets{u, v};
+  const PerFamily<const std::vector<Cylinder>&> cylindersOf{uCylinders, vCylinders};
+  const std::vector<Cylinder>& cylinders = cylindersOf[p.family];
   const Cylinder& c = cylinders[p.cylinder];
   if (slice < c.firstSlice || slice > c.lastSlice) return false;
-  const double position = PerFamily<const SliceSet&>{u, v}[p.family].slices[slice].position;
+  const double position = sets[p.family].slices[slice].position;
   for (int q = 0; q < static_cast<int>(s.patches.size()); ++q) {
     const ScaffoldPatch& o = s.patches[q];
     if (q == k || o.family != p.family) continue;

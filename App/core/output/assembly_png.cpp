@@ -345,7 +345,7 @@ std::vector<Panel3> assemblyPanels(const Arrangement& a, const std::vector<Patch
     const PatchPlane plane = patchPlane(a, static_cast<int>(k));
     const gp_Trsf pose = foldTransform(a, static_cast<int>(k), thetaDegrees);
     Panel3 panel;
-    panel.family = index(a.scaffold.patches[k].family);
+    panel.family = familyIndex(a.scaffold.patches[k].family);
     panel.patch = static_cast<int>(k);
     const gp_Dir n = gp_Dir(plane.normal.x, plane.normal.y, plane.normal.z).Transformed(pose);
     panel.normal = {n.X(), n.Y(), n.Z()};

@@ -188,7 +188,7 @@ class Search {
 
   MemoKey memoKey(int p, const std::vector<SlotPair>& slots) const {
     const PatchShape& ps = in_.patches[p];
-    MemoKey key{index(ps.family), ps.cylinder, ps.position, {}};
+    MemoKey key{familyIndex(ps.family), ps.cylinder, ps.position, {}};
     for (const PatchHinge& h : patchHinges(in_, slots, p))
       std::get<3>(key).emplace_back(h.x, h.w.lo, h.w.hi, h.root, static_cast<int>(h.slot));
     return key;
@@ -487,7 +487,7 @@ class Search {
       for (int p = 0; p < n_; ++p) {
         if (placed[p]) continue;
         const auto key = [&](int q) {
-          return std::make_tuple(-links[q], index(in_.patches[q].family), in_.patches[q].position);
+          return std::make_tuple(-links[q], familyIndex(in_.patches[q].family), in_.patches[q].position);
         };
         if (pick < 0 || key(p) < key(pick)) pick = p;
       }
@@ -556,7 +556,7 @@ std::vector<std::shared_ptr<const SlotCutter>> patchCutters(const RealizationInp
   const size_t n = in.patches.size();
   const auto wanted = [&](size_t p) { return needed.empty() || needed[p]; };
   const auto key = [&](size_t p) {
-    return std::make_pair(index(in.patches[p].family), in.patches[p].cylinder);
+    return std::make_pair(familyIndex(in.patches[p].family), in.patches[p].cylinder);
   };
   const auto cached = [&](size_t p) { return cache && in.patches[p].cylinder >= 0; };
   std::vector<std::shared_ptr<const SlotCutter>> out(n);

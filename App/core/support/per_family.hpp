@@ -14,11 +14,11 @@ constexpr Family other(Family f) {
 }
 
 // 0 for U, 1 for V: where a family is a number (keys, array axes).
-constexpr int index(Family f) {
+constexpr int familyIndex(Family f) {
   return f == Family::U ? 0 : 1;
 }
-constexpr Family familyAt(int index) {
-  return index == 0 ? Family::U : Family::V;
+constexpr Family familyAt(int i) {
+  return i == 0 ? Family::U : Family::V;
 }
 // "U" or "V", as patch ids and report.json name the families.
 constexpr const char* familyName(Family f) {

@@ -1,6 +1,5 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 #include "verify/certificate.hpp"
-#include "support/per_family.hpp"
 
 #include <Eigen/Dense>
 #include <Eigen/Sparse>
@@ -9,6 +8,8 @@
 #include <cmath>
 #include <set>
 #include <utility>
+
+#include "support/per_family.hpp"
 
 namespace sliceform {
 
@@ -40,7 +41,7 @@ Certificate certify(const std::vector<BarPatch>& patches, const std::vector<PinH
   // looked identical, and a stable scaffold was called wobbly).
   double lo[2] = {HUGE_VAL, HUGE_VAL}, hi[2] = {-HUGE_VAL, -HUGE_VAL};
   for (const BarPatch& p : patches) {
-    const int axis = index(p.family);
+    const int axis = familyIndex(p.family);
     lo[axis] = std::min(lo[axis], p.position);
     hi[axis] = std::max(hi[axis], p.position);
   }
