@@ -128,7 +128,8 @@ def main():
     rows = []
     for m in models:
         rows.append(run_one(a.cli, a.checker, m, design_args, out, a.timeout))
-        print("sweep: %-28s %-8s %s" % (rows[-1]["model"], rows[-1]["verdict"], rows[-1].get("reason", "")[:100]),
+        print("sweep: %-28s %-8s %5.1f s  %s" % (rows[-1]["model"], rows[-1]["verdict"], rows[-1]["time_s"],
+                                              rows[-1].get("reason", "")[:100]),
               file=sys.stderr, flush=True)
     text = table(rows)
     print(text)
