@@ -9,11 +9,13 @@ buildable that the checker rejects, a crash, a run that does not end.
     /usr/bin/python3 bench/sweep.py                      # OCCT's samples and ../shared/models
     /usr/bin/python3 bench/sweep.py --occt               # only /usr/share/opencascade/data
     /usr/bin/python3 bench/sweep.py MODEL ... -- --thickness 3 --clearance 0.1 --sheet 600x400
+    /usr/bin/python3 bench/sweep.py --jobs 2             # two models at once (scripts/test)
 
 Writes a Markdown table to stdout (and --out DIR/sweep.md, sweep.json); exit 1 when a model
 fails.
 """
 import argparse
+import concurrent.futures
 import glob
 import json
 import os
@@ -117,6 +119,9 @@ def main():
     ap.add_argument("--checker", default=os.path.join(SHARED, "tools", "check_report.py"))
     ap.add_argument("--timeout", type=int, default=300, help="seconds a model may take (default 300)")
     ap.add_argument("--out", help="keep the designs and write sweep.md and sweep.json here")
+    ap.add_argument("--jobs", type=int, default=1,
+                    help="models designed at once (default 1; more makes each model's seconds a shared "
+                         "machine's, and a time limit reached sooner)")
     a = ap.parse_args(argv)
     models = a.models or (occt_models() if a.occt else occt_models() + shared_models())
     if not models:
@@ -125,12 +130,15 @@ def main():
         sys.exit("sweep: no checker at " + a.checker)
     out = a.out or tempfile.mkdtemp(prefix="sliceform-sweep-")
     os.makedirs(out, exist_ok=True)
-    rows = []
-    for m in models:
-        rows.append(run_one(a.cli, a.checker, m, design_args, out, a.timeout))
-        print("sweep: %-28s %-8s %5.1f s  %s" % (rows[-1]["model"], rows[-1]["verdict"], rows[-1]["time_s"],
-                                              rows[-1].get("reason", "")[:100]),
-              file=sys.stderr, flush=True)
+    # A design uses both cores only in parts (the slot search's patch states, the exact
+    # patches); a second model designed beside it takes the rest.
+    with concurrent.futures.ThreadPoolExecutor(max_workers=max(1, a.jobs)) as pool:
+        futures = [pool.submit(run_one, a.cli, a.checker, m, design_args, out, a.timeout) for m in models]
+        for f in concurrent.futures.as_completed(futures):
+            r = f.result()
+            print("sweep: %-28s %-8s %5.1f s  %s" % (r["model"], r["verdict"], r["time_s"], r.get("reason", "")[:100]),
+                  file=sys.stderr, flush=True)
+        rows = [f.result() for f in futures]
     text = table(rows)
     print(text)
     if a.out:
