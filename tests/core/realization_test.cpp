@@ -10,6 +10,7 @@
 #include "model/model.hpp"
 #include "realization/interlock.hpp"
 #include "realization/realize.hpp"
+#include "support/bounded_cache.hpp"
 #include "test_support.hpp"
 
 namespace sliceform {
@@ -269,6 +270,31 @@ void expectRealizable(const TopoDS_Shape& shape, int slices = 48) {
     }
     EXPECT_TRUE(pinned);
   }
+}
+
+// The slot search's cache of patch states: kept across steps, what was not asked for since
+// the generation before is dropped once the budget is spent, and nothing before.
+TEST(SearchCache, KeepsWhatWasAskedForLatelyWithinTwiceItsBudget) {
+  BoundedCache<int, int> cache(10);
+  const auto put = [&](int key) { cache.put(key, std::make_shared<const int>(key * key), 2); };
+  for (int k = 0; k < 6; ++k) put(k);  // 12 of 10
+  cache.age();
+  ASSERT_NE(cache.find(1), nullptr);  // from the older generation into the current one
+  EXPECT_EQ(*cache.find(1), 1);
+  for (int k = 6; k < 11; ++k) put(k);  // 2 + 10 of 10
+  EXPECT_TRUE(cache.contains(0));       // not aged yet
+  cache.age();
+  for (const int gone : {0, 2, 3, 4, 5}) EXPECT_FALSE(cache.contains(gone)) << gone;
+  for (const int kept : {1, 6, 10}) EXPECT_NE(cache.find(kept), nullptr) << kept;
+  EXPECT_EQ(*cache.find(10), 100);
+
+  BoundedCache<int, int> small(10);
+  small.put(7, std::make_shared<const int>(7), 1);
+  small.put(7, std::make_shared<const int>(8), 1);  // a key is put once
+  small.age();
+  small.age();
+  ASSERT_NE(small.find(7), nullptr);  // within the budget nothing is dropped
+  EXPECT_EQ(*small.find(7), 7);
 }
 
 TEST(RealizeSolids, HollowSphere) {

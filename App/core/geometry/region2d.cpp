@@ -243,6 +243,12 @@ int Region2d::holeCount() const {
       paths_.begin(), paths_.end(), [](const ClipperLib::Path& p) { return !ClipperLib::Orientation(p); }));
 }
 
+size_t Region2d::bytes() const {
+  size_t n = sizeof(ClipperLib::Paths) + paths_.size() * sizeof(ClipperLib::Path);
+  for (const ClipperLib::Path& p : paths_) n += p.size() * sizeof(ClipperLib::IntPoint);
+  return n;
+}
+
 std::vector<Region2d> Region2d::components() const {
   Clipper clipper;
   clipper.AddPaths(paths_, ClipperLib::ptSubject, true);

@@ -50,6 +50,7 @@ class Region2d {
   double area() const;  // mm²
   Box2 bounds() const;
   int holeCount() const;
+  size_t bytes() const;  // about what its polygons take in memory
 
   // The region with its holes filled: what it covers seen from the side, as an outline.
   Region2d withoutHoles() const;

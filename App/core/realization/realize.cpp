@@ -12,6 +12,7 @@
 #include "arrangement/arrange.hpp"
 #include "frames/hinge_table.hpp"
 #include "realization/interlock.hpp"
+#include "support/bounded_cache.hpp"
 #include "support/parallel.hpp"
 #include "support/per_family.hpp"
 
@@ -19,6 +20,8 @@ namespace sliceform {
 namespace {
 
 constexpr int kMaxCommonHinges = 8;  // 2^8 combinations of one pair's hinges at most
+// Patch states the search keeps for later steps, per generation of its cache (two are kept).
+constexpr size_t kCacheBytes = size_t{48} << 20;
 
 // What the search minimises, in this order.
 struct Score {
@@ -67,6 +70,7 @@ struct PatchState {
   // Per hinge of the patch (in hingesOf_ order): the lengths of the hinge segment the
   // slotted patch still covers, for meets(); read off once here, not at every move.
   std::vector<std::vector<double>> onHinge;
+  size_t bytes = 0;  // about what it holds, for the search's cache
 };
 
 // A patch state by all it depends on: family, cylinder, position, and its hinges as
@@ -183,6 +187,10 @@ class Search {
         lengths.push_back(i.hi - i.lo);
       st->onHinge.push_back(std::move(lengths));
     }
+    st->bytes = sizeof(PatchState) + st->cuts.size() * sizeof(SlotCut) + st->onHinge.size() * 32;
+    st->bytes += st->slotted.bytes();
+    for (const Region2d::Loop& loop : st->holes.holes) st->bytes += loop.size() * sizeof(Vec2) + 32;
+    st->bytes += st->holes.boxes.size() * sizeof(Box2);
     return st;
   }
 
@@ -233,10 +241,10 @@ class Search {
     return key;
   }
 
-  // Evaluates, both cores at once, every patch state the moves need that is not cached yet.
-  // Which states are computed does not depend on timing, and each is a pure function, so the
-  // search stays deterministic.
-  void prepare(const std::vector<Move>& moves) {
+  // Evaluates, both cores at once, every patch state the moves need that is not cached yet
+  // (of the patches in `only`, when given). Which states are computed does not depend on
+  // timing, and each is a pure function, so the search stays deterministic.
+  void prepare(const std::vector<Move>& moves, const std::vector<int>& only = {}) {
     std::vector<PatchKey> keys;
     std::vector<std::vector<SlotPair>> slotsOf;
     std::set<PatchKey> queued;
@@ -245,8 +253,9 @@ class Search {
       for (const auto& [h, pair] : m) slots[h] = pair;
       for (const auto& [h, pair] : m)
         for (const int p : {in_.hinges[h].u, in_.hinges[h].v}) {
+          if (!only.empty() && std::find(only.begin(), only.end(), p) == only.end()) continue;
           PatchKey key = patchKey(p, slots);
-          if (cache_.count(key) || !queued.insert(key).second) continue;
+          if (cache_.contains(key) || !queued.insert(key).second) continue;
           keys.push_back(std::move(key));
           slotsOf.push_back(slots);
         }
@@ -255,16 +264,15 @@ class Search {
     std::vector<int> patches;
     for (const PatchKey& key : keys) patches.push_back(key.first);
     std::vector<std::shared_ptr<const PatchState>> states = evaluatePatches(patches, slotsOf, false);
-    for (size_t i = 0; i < keys.size(); ++i) cache_.emplace(std::move(keys[i]), std::move(states[i]));
+    for (size_t i = 0; i < keys.size(); ++i) cache_.put(std::move(keys[i]), states[i], states[i]->bytes);
   }
 
   // The state of patch p for the current slots, computed when no move asked for it yet.
   std::shared_ptr<const PatchState> stateOf(int p) {
     PatchKey key = patchKey(p, slots_);
-    const auto it = cache_.find(key);
-    if (it != cache_.end()) return it->second;
+    if (auto st = cache_.find(key)) return st;
     auto st = evaluatePatches({p}, {slots_}, true).front();
-    cache_.emplace(std::move(key), st);
+    cache_.put(std::move(key), st, st->bytes);
     return st;
   }
 
@@ -428,12 +436,60 @@ class Search {
     return out;
   }
 
+  // A lower bound on the score after move m, knowing the new states of the patches in `known`
+  // (cached) and of no other patch the move touches: those are taken whole, free of
+  // interlocks, and every pin they lost as restored. `lost` is lostPins() now.
+  Score bound(const Move& m, const std::vector<int>& known, const std::set<std::pair<int, int>>& lost) {
+    std::set<int> touched;
+    for (const auto& [h, pair] : m) touched.insert({in_.hinges[h].u, in_.hinges[h].v});
+    Score s = score();
+    Move before;  // the move undone
+    for (const auto& [h, pair] : m) {
+      s.cutThroughs += (isUpDown(pair) ? 0 : 1) - (isUpDown(slots_[h]) ? 0 : 1);
+      before.push_back({h, slots_[h]});
+      slots_[h] = pair;
+    }
+    for (const int p : touched) {
+      s.broken -= state_[p]->pieces > 1 ? 1 : 0;
+      s.extraPieces -= std::max(0, state_[p]->pieces - 1);
+      if (std::find(known.begin(), known.end(), p) == known.end()) continue;
+      const int pieces = cache_.find(patchKey(p, slots_))->pieces;
+      s.broken += pieces > 1 ? 1 : 0;
+      s.extraPieces += std::max(0, pieces - 1);
+    }
+    for (const auto& [h, pair] : before) slots_[h] = pair;
+    for (const auto& [a, b] : lost) s.broken -= touched.count(a) || touched.count(b) ? 1 : 0;
+    for (const int p : touched)
+      for (int q = 0; q < n_; ++q) {
+        if (in_.patches[q].family == in_.patches[p].family || (touched.count(q) && q < p)) continue;
+        s.interlocks -= in_.patches[p].family == Family::U ? lockAt(p, q) : lockAt(q, p);
+      }
+    return s;
+  }
+
+  // The moves of a tier that may improve on `now`, by bound() from the states of the
+  // violation's own patches, cut first. The others are no better than now whatever their
+  // partners' states, so those are not cut: the search takes the same steps with fewer
+  // cuts (occ/Top.brep: a split patch's flips mostly leave it split, and each would cut a
+  // partner of some 40 hinges).
+  std::vector<Move> mayImprove(const std::vector<Move>& tier, std::pair<int, int> v, const Score& now) {
+    std::vector<int> own;
+    for (const int p : {v.first, v.second})
+      if (p >= 0) own.push_back(p);
+    prepare(tier, own);
+    const std::set<std::pair<int, int>> lost = lostPins();
+    std::vector<Move> out;
+    for (const Move& m : tier)
+      if (bound(m, own, lost) < now) out.push_back(m);
+    return out;
+  }
+
   bool improve(std::pair<int, int> v) {
     const Score now = score();
-    // States from earlier steps are seldom asked for again; keeping them would only grow.
-    cache_.clear();
-    for (const std::vector<Move>& tier : tiers(v)) {
+    cache_.age();
+    for (const std::vector<Move>& all : tiers(v)) {
       if (deadline_.passed()) return false;
+      const std::vector<Move> tier = mayImprove(all, v, now);
       prepare(tier);
       const Move* best = nullptr;
       Score bestScore = now;
@@ -522,7 +578,11 @@ class Search {
   std::vector<std::unique_ptr<VerticalLines>> lines_;            // per patch: its shape on its hinge lines
   std::vector<std::shared_ptr<const SlotCutter>> cutters_;       // per patch
   std::vector<std::shared_ptr<const PatchState>> state_;         // per patch, for slots_
-  std::map<PatchKey, std::shared_ptr<const PatchState>> cache_;  // states the current step computed
+  // The patch states moves asked for. Kept across steps: a violation no move improved is
+  // tried again whenever its neighbourhood changed, and asks for the same states but the few
+  // a move since changed (occ/Top.brep: three split patches, 870 states a try, tried again
+  // after every accepted move; the search ran out of its 60 s with 38 patches in pieces).
+  BoundedCache<PatchKey, PatchState> cache_{kCacheBytes};
   std::vector<int> locks_;  // interlocked hole pairs, [U-patch * n + V-patch]
   int found_ = 0;
   std::vector<std::pair<int, SlotPair>> saved_;
