@@ -48,6 +48,17 @@ Design runDesign(const Model& model, DesignParams params, const Progress& progre
   // The earlier design's exact sections where the cylinders are its own.
   if (earlier && d.arrangement.stagesTaken == 3) d.exactSections = earlier->exactSections;
   d.patches = timed(d.timings, "exact patches", progress, [&] {
+    // A design the slot search left broken is refused whatever its faces are: it keeps the
+    // polygons the search checked, and the time its exact sections would take goes to the
+    // frames the CLI and the direction search try next (occ/Top.brep at the file's axes:
+    // 11 patches in pieces, then 13-32 s of exact sections before the next frame began).
+    const Realization& r = d.realization;
+    if (model.kind == SourceKind::Brep && (r.splitPatches > 0 || r.lostPins > 0 || r.interlocks.remaining > 0)) {
+      std::vector<PatchFace> polygons;
+      for (size_t k = 0; k < d.arrangement.scaffold.patches.size(); ++k)
+        polygons.push_back(polygonPatch(d.arrangement, r, static_cast<int>(k), false));
+      return polygons;
+    }
     return exactPatches(model, d.arrangement, d.realization, deadline, &d.exactSections);
   });
   const std::vector<ScaffoldHinge>& hinges = d.arrangement.scaffold.hinges;
