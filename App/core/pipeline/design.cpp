@@ -53,7 +53,8 @@ Design runDesign(const Model& model, DesignParams params, const Progress& progre
     // frames the CLI and the direction search try next (occ/Top.brep at the file's axes:
     // 11 patches in pieces, then 13-32 s of exact sections before the next frame began).
     const Realization& r = d.realization;
-    if (model.kind == SourceKind::Brep && (r.splitPatches > 0 || r.lostPins > 0 || r.interlocks.remaining > 0)) {
+    if (model.kind == SourceKind::Brep &&
+        (r.splitPatches > 0 || r.lostPins > 0 || r.interlocks.remaining > 0)) {
       std::vector<PatchFace> polygons;
       for (size_t k = 0; k < d.arrangement.scaffold.patches.size(); ++k)
         polygons.push_back(polygonPatch(d.arrangement, r, static_cast<int>(k), false));

@@ -227,7 +227,8 @@ class Search {
     });
     if (memo_)
       for (const size_t i : missing)
-        if (in_.patches[patches[i]].cylinder >= 0) memo_->states.put(std::move(keys[i]), out[i], out[i]->bytes);
+        if (in_.patches[patches[i]].cylinder >= 0)
+          memo_->states.put(std::move(keys[i]), out[i], out[i]->bytes);
     return out;
   }
 
@@ -436,11 +437,12 @@ class Search {
 
   // A lower bound on the score after move m, knowing the new states of the patches in `known`
   // (cached) and of no other patch the move touches: those are taken whole, free of
-  // interlocks, and every pin they lost as restored. `lost` is lostPins() now.
-  Score bound(const Move& m, const std::vector<int>& known, const std::set<std::pair<int, int>>& lost) {
+  // interlocks, and every pin they lost as restored. `now` is score() and `lost` lostPins().
+  Score bound(const Move& m, const std::vector<int>& known, const Score& now,
+              const std::set<std::pair<int, int>>& lost) {
     std::set<int> touched;
     for (const auto& [h, pair] : m) touched.insert({in_.hinges[h].u, in_.hinges[h].v});
-    Score s = score();
+    Score s = now;
     Move before;  // the move undone
     for (const auto& [h, pair] : m) {
       s.cutThroughs += (isUpDown(pair) ? 0 : 1) - (isUpDown(slots_[h]) ? 0 : 1);
@@ -478,7 +480,7 @@ class Search {
     const std::set<std::pair<int, int>> lost = lostPins();
     std::vector<Move> out;
     for (const Move& m : tier)
-      if (bound(m, own, lost) < now) out.push_back(m);
+      if (bound(m, own, now, lost) < now) out.push_back(m);
     return out;
   }
 
@@ -574,9 +576,9 @@ class Search {
   std::vector<std::vector<int>> hingesOf_;
   std::vector<std::pair<size_t, size_t>> hingeIndex_;  // per hinge: its index in hingesOf_ of u, of v
   std::vector<SlotPair> slots_;
-  std::vector<std::unique_ptr<VerticalLines>> lines_;            // per patch: its shape on its hinge lines
-  std::vector<std::shared_ptr<const SlotCutter>> cutters_;       // per patch
-  std::vector<std::shared_ptr<const PatchState>> state_;         // per patch, for slots_
+  std::vector<std::unique_ptr<VerticalLines>> lines_;       // per patch: its shape on its hinge lines
+  std::vector<std::shared_ptr<const SlotCutter>> cutters_;  // per patch
+  std::vector<std::shared_ptr<const PatchState>> state_;    // per patch, for slots_
   // The patch states moves asked for. Kept across steps: a violation no move improved is
   // tried again whenever its neighbourhood changed, and asks for the same states but the few
   // a move since changed (occ/Top.brep: three split patches, 870 states a try, tried again
