@@ -108,10 +108,12 @@ std::vector<std::string> designProblems(const Design& d) {
   const Arrangement& a = d.arrangement;
   const Emitted& e = d.emitted;
   const auto id = [&](int k) { return patchId(a.scaffold, k); };
-  if (d.realization.timedOut || d.grazes.timedOut) {
+  if (d.realization.timedOut || d.grazes.timedOut || d.grazes.splitTimedOut) {
     std::ostringstream s;
     s << "the time limit (" << d.timeLimit << " s) ran out while "
-      << (d.realization.timedOut ? "searching for slots" : "moving patches off grazes")
+      << (d.realization.timedOut ? "searching for slots"
+          : d.grazes.timedOut    ? "moving patches off grazes"
+                                 : "moving or taking out patches the slot search left in pieces")
       << "; this is the best design found (try a larger --time-limit, or fewer --slices)";
     out.push_back(s.str());
   }

@@ -269,7 +269,7 @@ void repairSplits(Arrangement& a, Realization& r, GrazeRepair& g, const SlotPara
       if (!changed && drop(k)) ++g.splitDropped, changed = true;
     if (!changed) break;
   }
-  g.timedOut = g.timedOut || deadline.passed();
+  g.splitTimedOut = deadline.passed();
   if (g.splitMoved + g.splitDropped > 0) remeasure(a);
 }
 

@@ -27,13 +27,14 @@ std::vector<int> grazingHinges(const RealizationInput& input, const SlotParams& 
                                const std::vector<int>& hinges = {}, CutterCache* cutters = nullptr);
 
 struct GrazeRepair {
-  int found = 0;          // grazing hinges before
-  int moved = 0;          // patches moved
-  int dropped = 0;        // patches taken out where no move helped
-  int remaining = 0;      // grazing hinges after
-  int splitMoved = 0;     // patches the slot search left split, moved and searched again
-  int splitDropped = 0;   // split patches taken out, the scaffold still certified
-  bool timedOut = false;  // the deadline passed while moving patches
+  int found = 0;               // grazing hinges before
+  int moved = 0;               // patches moved
+  int dropped = 0;             // patches taken out where no move helped
+  int remaining = 0;           // grazing hinges after
+  int splitMoved = 0;          // patches the slot search left split, moved and searched again
+  int splitDropped = 0;        // split patches taken out, the scaffold still certified
+  bool timedOut = false;       // the deadline passed while moving patches off grazes
+  bool splitTimedOut = false;  // the deadline passed while repairing patches left in pieces
 };
 
 // Moves patches off grazes (see above); the arrangement's scaffold, hinges, certificate
