@@ -25,6 +25,7 @@
 #include <optional>
 #include <sstream>
 
+#include "exact/rebuilt_faces.hpp"
 #include "geometry/simplify.hpp"
 #include "slicing/brep_slicer.hpp"
 #include "support/error.hpp"
@@ -180,8 +181,13 @@ TopoDS_Shape exactSection(const Cylinder& cylinder, const std::vector<int>& chos
   }
   std::vector<TopoDS_Shape> own;
   for (const size_t k : sectionsAddingToUnion(polygons, 2 * deflection)) own.push_back(candidates[k]);
-  TopoDS_Shape fused = own.size() > 1 ? boolean({own.front()}, {own.begin() + 1, own.end()}, false)
-                                      : (own.empty() ? TopoDS_Shape() : own.front());
+  // Rebuilt from the exact edges along the union of their polygons; the Boolean fuse where
+  // that is unsure (exact/rebuilt_faces.hpp).
+  TopoDS_Shape fused = own.size() == 1 ? own.front() : TopoDS_Shape();
+  if (own.size() > 1)
+    fused = rebuiltFaces(
+        own, [](const std::vector<Region2d>& p) { return Region2d::uniteAll(p); }, frame, 0, deflection);
+  if (fused.IsNull() && own.size() > 1) fused = boolean({own.front()}, {own.begin() + 1, own.end()}, false);
   // Material of the polygon section the exact slices lack (merged-in branches): keep it, as
   // polygons, so every hinge found on the polygons is on paper.
   const double opening = std::max(4 * meshDeflection, 0.05);

@@ -2,8 +2,10 @@
 // Exact patch geometry: the faces that get cut. The search stages work on polygons; here
 // every patch is rebuilt for output, on its plane in 3D at the popped-up pose:
 //  - BRep sources: the exact sections of the solid at each slice of the patch's cylinder
-//    (only the faces of the cylinder's part), moved onto the patch plane, fused and cleaned
-//    with ShapeUpgrade_UnifySameDomain, so circles stay circles. Pieces the polygon section
+//    (only the faces of the cylinder's part), moved onto the patch plane and combined:
+//    rebuilt from their exact edges along the union of their polygons (exact/rebuilt_faces.hpp),
+//    or where that is unsure fused and cleaned with ShapeUpgrade_UnifySameDomain, so circles
+//    stay circles. Pieces the polygon section
 //    has and the slices do not (small branches the Reeb simplification merged in from other
 //    slices) are added as polygons;
 //  - mesh sources: the polygon section itself, simplified within kOutlineDeflection;

@@ -1,0 +1,399 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+#include "exact/rebuilt_faces.hpp"
+
+#include <BRepAdaptor_Curve.hxx>
+#include <BRepBuilderAPI_MakeFace.hxx>
+#include <BRepCheck_Analyzer.hxx>
+#include <BRepTools_WireExplorer.hxx>
+#include <BRep_Builder.hxx>
+#include <BRep_Tool.hxx>
+#include <GCPnts_QuasiUniformDeflection.hxx>
+#include <Geom_Curve.hxx>
+#include <Standard_Failure.hxx>
+#include <TopExp_Explorer.hxx>
+#include <TopoDS.hxx>
+#include <TopoDS_Compound.hxx>
+#include <TopoDS_Edge.hxx>
+#include <TopoDS_Face.hxx>
+#include <TopoDS_Vertex.hxx>
+#include <TopoDS_Wire.hxx>
+#include <gp_Ax3.hxx>
+#include <gp_Pln.hxx>
+
+#include <algorithm>
+#include <cmath>
+#include <optional>
+#include <unordered_map>
+
+#include "slicing/brep_slicer.hpp"
+
+namespace sliceform {
+namespace {
+
+// How far a vertex of the combined polygon may lie from the polygon it came from: Clipper
+// rounds to 10 nm units, and its cleaning drops vertices within 1.415 units of a line.
+constexpr double kOnPolygon = 4 / Region2d::kUnitsPerMm;
+
+// One exact edge and its polygon, in parameter order.
+struct Source {
+  Handle(Geom_Curve) curve;  // in the plane's place (the edge's location applied)
+  double tolerance = 0;
+  std::vector<double> t;
+  std::vector<Vec2> p;
+};
+
+// Where a point lies on a source's polygon: the parameter interpolated in a segment.
+struct Match {
+  int source, segment;
+  double t;
+};
+
+double distanceToSegment(Vec2 q, Vec2 a, Vec2 b, double& fraction) {
+  const double dx = b.x - a.x, dy = b.y - a.y, len2 = dx * dx + dy * dy;
+  fraction = len2 > 0 ? std::clamp(((q.x - a.x) * dx + (q.y - a.y) * dy) / len2, 0.0, 1.0) : 0.0;
+  return std::hypot(q.x - a.x - fraction * dx, q.y - a.y - fraction * dy);
+}
+
+// The sources' polygon segments by grid cell, to find the ones a point lies on.
+class SegmentGrid {
+ public:
+  SegmentGrid(const std::vector<Source>& sources, double cell) : sources_(sources), cell_(cell) {
+    for (int s = 0; s < static_cast<int>(sources.size()); ++s)
+      for (int i = 0; i + 1 < static_cast<int>(sources[s].p.size()); ++i) {
+        const Vec2 a = sources[s].p[i], b = sources[s].p[i + 1];
+        for (long long x = key(std::min(a.x, b.x) - kOnPolygon); x <= key(std::max(a.x, b.x) + kOnPolygon);
+             ++x)
+          for (long long y = key(std::min(a.y, b.y) - kOnPolygon); y <= key(std::max(a.y, b.y) + kOnPolygon);
+               ++y)
+            cells_[x * 1000003 + y].push_back({s, i});
+      }
+  }
+  std::vector<Match> at(Vec2 q) const {
+    std::vector<Match> out;
+    const auto it = cells_.find(key(q.x) * 1000003 + key(q.y));
+    if (it == cells_.end()) return out;
+    for (const auto& [s, i] : it->second) {
+      const Source& src = sources_[s];
+      double f;
+      if (distanceToSegment(q, src.p[i], src.p[i + 1], f) <= kOnPolygon)
+        out.push_back({s, i, src.t[i] + f * (src.t[i + 1] - src.t[i])});
+    }
+    return out;
+  }
+  // Whether q lies within `radius` (at most a cell) of source s's polygon.
+  bool near(Vec2 q, int s, double radius) const {
+    for (long long dx = -1; dx <= 1; ++dx)
+      for (long long dy = -1; dy <= 1; ++dy) {
+        const auto it = cells_.find((key(q.x) + dx) * 1000003 + key(q.y) + dy);
+        if (it == cells_.end()) continue;
+        for (const auto& [t, i] : it->second) {
+          double f;
+          if (t == s && distanceToSegment(q, sources_[t].p[i], sources_[t].p[i + 1], f) <= radius)
+            return true;
+        }
+      }
+    return false;
+  }
+
+ private:
+  long long key(double v) const { return static_cast<long long>(std::floor(v / cell_)); }
+  const std::vector<Source>& sources_;
+  double cell_;
+  std::unordered_map<long long, std::vector<std::pair<int, int>>> cells_;
+};
+
+// The crossing of two curves on the plane near a(ta), b(tb), by Gauss-Newton on
+// |a(ta) - b(tb)|²; the start where it does not converge (tangent curves).
+void refineCrossing(const Source& a, double& ta, const Source& b, double& tb, double deflection) {
+  double sa = ta, sb = tb;
+  gp_Pnt pa, pb;
+  gp_Vec da, db;
+  for (int k = 0; k < 8; ++k) {
+    a.curve->D1(sa, pa, da);
+    b.curve->D1(sb, pb, db);
+    const gp_Vec r(pb, pa);
+    if (r.Magnitude() < 1e-9) break;
+    // J = [da, -db]; (JᵀJ) step = -Jᵀ r.
+    const double m11 = da.Dot(da), m12 = -da.Dot(db), m22 = db.Dot(db);
+    const double g1 = da.Dot(r), g2 = -db.Dot(r);
+    const double det = m11 * m22 - m12 * m12;
+    if (std::abs(det) < 1e-12 * m11 * m22) return;
+    sa -= (m22 * g1 - m12 * g2) / det;
+    sb -= (m11 * g2 - m12 * g1) / det;
+  }
+  a.curve->D0(sa, pa);
+  b.curve->D0(sb, pb);
+  const gp_Pnt a0 = a.curve->Value(ta), b0 = b.curve->Value(tb);
+  // Kept only where it closed the gap without running off along the curves.
+  if (pa.Distance(pb) < a0.Distance(b0) && pa.Distance(a0) < 10 * deflection &&
+      pb.Distance(b0) < 10 * deflection)
+    ta = sa, tb = sb;
+}
+
+// A stretch of one loop along one source, vertices first..last of the loop.
+struct Run {
+  int source;
+  double t0, t1;
+  std::vector<Vec2> points;  // the loop's vertices along it, its ends included
+};
+
+// The edges of one loop of the combined region, in its order; empty where unsure.
+// Whether the segment a-b runs along source s's polygon (both ends and its middle on it).
+bool along(const SegmentGrid& grid, Vec2 a, Vec2 b, int s) {
+  const Vec2 mid{(a.x + b.x) / 2, (a.y + b.y) / 2};
+  for (const Vec2 q : {a, b, mid}) {
+    bool on = false;
+    for (const Match& m : grid.at(q)) on = on || m.source == s;
+    if (!on) return false;
+  }
+  return true;
+}
+
+// The loop with the vertices Clipper's cleaning dropped put back where a segment runs along
+// two sources: where the sections of two slices meet on nearly one line, the step between
+// them (under 14 nm) is cleaned away, and the segment then lies on neither polygon alone.
+// The vertex put back is the sample point of a source that ends the stretch on it.
+std::optional<Region2d::Loop> withSteps(const Region2d::Loop& loop, const std::vector<Source>& sources,
+                                        const SegmentGrid& grid) {
+  Region2d::Loop out;
+  for (size_t j = 0; j < loop.size(); ++j) {
+    Vec2 a = loop[j];
+    const Vec2 b = loop[(j + 1) % loop.size()];
+    out.push_back(a);
+    for (int inserted = 0;; ++inserted) {
+      std::vector<int> at;
+      for (const Match& m : grid.at(a)) at.push_back(m.source);
+      if (std::any_of(at.begin(), at.end(), [&](int s) { return along(grid, a, b, s); })) break;
+      if (inserted == 8) return std::nullopt;
+      // The farthest sample point towards b, near the line, that a's source runs to.
+      const double dx = b.x - a.x, dy = b.y - a.y, len = std::hypot(dx, dy);
+      double best = 0;
+      std::optional<Vec2> step;
+      for (const int s : at)
+        for (const Vec2& c : sources[s].p) {
+          const double f = ((c.x - a.x) * dx + (c.y - a.y) * dy) / (len * len);
+          const double off = std::abs((c.x - a.x) * dy - (c.y - a.y) * dx) / len;
+          if (f > best && f < 1 && off <= kOnPolygon && along(grid, a, c, s)) best = f, step = c;
+        }
+      if (!step) return std::nullopt;
+      out.push_back(*step);
+      a = *step;
+    }
+  }
+  return out;
+}
+
+std::vector<TopoDS_Edge> loopEdges(const Region2d::Loop& original, const std::vector<Source>& sources,
+                                   const SegmentGrid& grid, double deflection) {
+  const std::optional<Region2d::Loop> stepped = withSteps(original, sources, grid);
+  if (!stepped) return {};
+  const Region2d::Loop& loop = *stepped;
+  const size_t n = loop.size();
+  std::vector<std::vector<Match>> matches(n);
+  for (size_t j = 0; j < n; ++j) matches[j] = grid.at(loop[j]);
+  // Each segment's source (the previous segment's where it can), and its ends' parameters
+  // on it, the nearest pair.
+  std::vector<int> source(n, -1);
+  std::vector<double> ta(n), tb(n);
+  const auto onSource = [&](Vec2 q, int s) {
+    for (const Match& m : grid.at(q))
+      if (m.source == s) return true;
+    return false;
+  };
+  for (size_t pass = 0; pass < 2; ++pass)  // the second pass lets segment 0 follow the last
+    for (size_t j = 0; j < n; ++j) {
+      const size_t k = (j + 1) % n;
+      const Vec2 mid{(loop[j].x + loop[k].x) / 2, (loop[j].y + loop[k].y) / 2};
+      const int previous = source[(j + n - 1) % n];
+      int chosen = -1;
+      double best = 0;
+      for (const Match& a : matches[j])
+        for (const Match& b : matches[k]) {
+          if (a.source != b.source || !onSource(mid, a.source)) continue;
+          const double span = std::abs(b.t - a.t);
+          const bool better = chosen < 0 || (a.source == previous && chosen != previous) ||
+                              ((a.source == previous) == (chosen == previous) && span < best);
+          if (better) chosen = a.source, best = span, ta[j] = a.t, tb[j] = b.t;
+        }
+      if (chosen < 0) return {};
+      source[j] = chosen;
+    }
+  // Runs: consecutive segments on one source whose parameters continue.
+  const auto continues = [&](size_t j) {  // segment j continues segment j - 1
+    const size_t i = (j + n - 1) % n;
+    return source[i] == source[j] && std::abs(tb[i] - ta[j]) <= 1e-12 * (1 + std::abs(ta[j])) &&
+           (tb[i] - ta[i]) * (tb[j] - ta[j]) > 0;
+  };
+  size_t start = n;
+  for (size_t j = 0; j < n && start == n; ++j)
+    if (!continues(j)) start = j;
+  if (start == n) return {};  // one source all round without a seam: not a loop an edge can close
+  std::vector<Run> runs;
+  for (size_t step = 0; step < n; ++step) {
+    const size_t j = (start + step) % n;
+    if (step == 0 || !continues(j))
+      runs.push_back({source[j], ta[j], tb[j], {loop[j]}});
+    else
+      runs.back().t1 = tb[j];
+    runs.back().points.push_back(loop[(j + 1) % n]);
+  }
+  // Excursions merged: where the boundary leaves a source for others and comes back to it,
+  // all the while within 2 deflections of it, the run stays on it. Sections of neighbouring
+  // slices cross each other many times within nanometres, and the union would otherwise
+  // run along each in turn; 2 deflections is what sectionsAddingToUnion leaves out too.
+  // Twice, the runs turned half round between: an excursion across the loop's first vertex
+  // is in the middle the second time.
+  const double stay = 2 * deflection;
+  const auto merge = [&] {
+    for (size_t i = 0; i + 1 < runs.size();) {
+      bool merged = false;
+      for (size_t j = i + 1; j < runs.size() && j <= i + 8; ++j) {
+        if (runs[j].source != runs[i].source) continue;
+        const Run &a = runs[i], &b = runs[j];
+        // Two runs of one source side by side (split where the loop began) join where their
+        // parameters meet; across an excursion they go on the same way.
+        bool within = (a.t1 - a.t0) * (b.t1 - b.t0) > 0 &&
+                      (j == i + 1 ? std::abs(b.t0 - a.t1) <= 1e-9 * (1 + std::abs(a.t1))
+                                  : (a.t1 - a.t0) * (b.t0 - a.t1) >= 0);
+        for (size_t k = i + 1; k < j && within; ++k)
+          for (const Vec2& q : runs[k].points) within = within && grid.near(q, a.source, stay);
+        if (within) {
+          runs[i].t1 = b.t1;
+          runs[i].points.insert(runs[i].points.end(), b.points.begin(), b.points.end());
+          runs.erase(runs.begin() + static_cast<long>(i) + 1, runs.begin() + static_cast<long>(j) + 1);
+          merged = true;  // the merged run may take the next excursion too
+        }
+        if (merged || j > i + 1) break;  // an adjacent run that does not join: look further
+      }
+      if (!merged) ++i;
+    }
+  };
+  merge();
+  std::rotate(runs.begin(), runs.begin() + static_cast<long>(runs.size() / 2), runs.end());
+  merge();
+  // The vertex where run r ends and run r + 1 begins, the curves' crossing.
+  BRep_Builder builder;
+  std::vector<TopoDS_Vertex> ends(runs.size());
+  for (size_t r = 0; r < runs.size(); ++r) {
+    Run& a = runs[r];
+    Run& b = runs[(r + 1) % runs.size()];
+    if (a.source != b.source) refineCrossing(sources[a.source], a.t1, sources[b.source], b.t0, deflection);
+    const gp_Pnt pa = sources[a.source].curve->Value(a.t1), pb = sources[b.source].curve->Value(b.t0);
+    const gp_Pnt mid((pa.XYZ() + pb.XYZ()) / 2);
+    builder.MakeVertex(ends[r], mid, std::max(Precision::Confusion(), 1.01 * pa.Distance(pb) / 2));
+  }
+  std::vector<TopoDS_Edge> out;
+  for (size_t r = 0; r < runs.size(); ++r) {
+    const Run& run = runs[r];
+    const Source& s = sources[run.source];
+    const TopoDS_Vertex& first = ends[(r + runs.size() - 1) % runs.size()];
+    const TopoDS_Vertex& last = ends[r];
+    const bool forward = run.t1 > run.t0;
+    double lo = forward ? run.t0 : run.t1, hi = forward ? run.t1 : run.t0;
+    if (!s.curve->IsPeriodic())
+      lo = std::max(lo, s.curve->FirstParameter()), hi = std::min(hi, s.curve->LastParameter());
+    if (!(hi > lo)) return {};
+    const TopoDS_Vertex& vlo = forward ? first : last;
+    const TopoDS_Vertex& vhi = forward ? last : first;
+    for (const auto& [t, v] : {std::pair{lo, vlo}, std::pair{hi, vhi}}) {
+      const double gap = s.curve->Value(t).Distance(BRep_Tool::Pnt(v));
+      if (gap > BRep_Tool::Tolerance(v)) builder.UpdateVertex(v, gap * 1.01);
+    }
+    TopoDS_Edge edge;
+    builder.MakeEdge(edge, s.curve, s.tolerance);
+    builder.Add(edge, vlo.Oriented(TopAbs_FORWARD));
+    builder.Add(edge, vhi.Oriented(TopAbs_REVERSED));
+    builder.Range(edge, lo, hi);
+    out.push_back(forward ? edge : TopoDS::Edge(edge.Reversed()));
+  }
+  return out;
+}
+
+}  // namespace
+
+TopoDS_Shape rebuiltFaces(const std::vector<TopoDS_Shape>& shapes,
+                          const std::function<Region2d(const std::vector<Region2d>&)>& combine,
+                          const SliceFrame& frame, double position, double deflection) try {
+  std::vector<Source> sources;
+  std::vector<Region2d> polygons;
+  for (const TopoDS_Shape& shape : shapes) {
+    std::vector<Region2d> pieces;
+    for (TopExp_Explorer f(shape, TopAbs_FACE); f.More(); f.Next()) {
+      const TopoDS_Face& face = TopoDS::Face(f.Current());
+      std::vector<Region2d::Loop> loops;
+      for (TopExp_Explorer w(face, TopAbs_WIRE); w.More(); w.Next()) {
+        Region2d::Loop loop;
+        for (BRepTools_WireExplorer it(TopoDS::Wire(w.Current()), face); it.More(); it.Next()) {
+          const TopoDS_Edge& edge = it.Current();
+          TopLoc_Location location;
+          double first, last;
+          const Handle(Geom_Curve) curve = BRep_Tool::Curve(edge, location, first, last);
+          if (curve.IsNull()) return {};
+          Source s;
+          s.curve = location.IsIdentity()
+                        ? curve
+                        : Handle(Geom_Curve)::DownCast(curve->Transformed(location.Transformation()));
+          s.tolerance = BRep_Tool::Tolerance(edge);
+          const BRepAdaptor_Curve adaptor(edge);
+          GCPnts_QuasiUniformDeflection sampler(adaptor, deflection);
+          if (!sampler.IsDone() || sampler.NbPoints() < 2) return {};
+          for (Standard_Integer i = 1; i <= sampler.NbPoints(); ++i) {
+            const gp_Pnt p = sampler.Value(i);
+            s.t.push_back(sampler.Parameter(i));
+            s.p.push_back(frame.to2d({p.X(), p.Y(), p.Z()}));
+          }
+          std::vector<Vec2> points = s.p;
+          if (it.Orientation() == TopAbs_REVERSED) std::reverse(points.begin(), points.end());
+          loop.insert(loop.end(), points.begin(), points.end() - 1);  // the next edge starts there
+          sources.push_back(std::move(s));
+        }
+        loops.push_back(std::move(loop));
+      }
+      pieces.push_back(Region2d::fromLoops(loops, FillRule::EvenOdd));
+    }
+    polygons.push_back(Region2d::uniteAll(pieces));
+  }
+  const Region2d region = combine(polygons);
+  if (region.empty()) return {};
+  const SegmentGrid grid(sources, std::max(0.5, 20 * deflection));
+  const Vec3 o = frame.normal * position;
+  const gp_Pln plane(gp_Ax3(gp_Pnt(o.x, o.y, o.z), gp_Dir(frame.normal.x, frame.normal.y, frame.normal.z),
+                            gp_Dir(frame.xAxis.x, frame.xAxis.y, frame.xAxis.z)));
+  BRep_Builder builder;
+  TopoDS_Compound out;
+  builder.MakeCompound(out);
+  double perimeter = 0;
+  for (const Region2d& piece : region.components()) {
+    std::vector<Region2d::Loop> loops = piece.loops();  // outer (counter-clockwise) first
+    std::stable_partition(loops.begin(), loops.end(),
+                          [](const Region2d::Loop& l) { return Region2d::signedArea(l) > 0; });
+    std::optional<BRepBuilderAPI_MakeFace> face;
+    for (const Region2d::Loop& loop : loops) {
+      for (size_t k = 0; k < loop.size(); ++k)
+        perimeter +=
+            std::hypot(loop[k].x - loop[(k + 1) % loop.size()].x, loop[k].y - loop[(k + 1) % loop.size()].y);
+      const std::vector<TopoDS_Edge> edges = loopEdges(loop, sources, grid, deflection);
+      if (edges.empty()) return {};
+      TopoDS_Wire wire;
+      builder.MakeWire(wire);
+      for (const TopoDS_Edge& e : edges) builder.Add(wire, e);
+      wire.Closed(Standard_True);
+      if (!face)
+        face.emplace(plane, wire, Standard_True);
+      else
+        face->Add(wire);
+      if (!face->IsDone()) return {};
+    }
+    const TopoDS_Face made = face->Face();
+    if (!BRepCheck_Analyzer(made).IsValid()) return {};
+    builder.Add(out, made);
+  }
+  // The faces must cover the region (within the polygons' deflection along its boundary).
+  const double area = polygoniseFaces(out, frame, deflection).area();
+  if (std::abs(area - region.area()) > 2 * deflection * perimeter) return {};
+  return out;
+} catch (const Standard_Failure&) {
+  return {};
+}
+
+}  // namespace sliceform
