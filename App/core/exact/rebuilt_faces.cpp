@@ -137,7 +137,6 @@ struct Run {
   std::vector<Vec2> points;  // the loop's vertices along it, its ends included
 };
 
-// The edges of one loop of the combined region, in its order; empty where unsure.
 // Whether the segment a-b runs along source s's polygon (both ends and its middle on it).
 bool along(const SegmentGrid& grid, Vec2 a, Vec2 b, int s) {
   const Vec2 mid{(a.x + b.x) / 2, (a.y + b.y) / 2};
@@ -183,6 +182,7 @@ std::optional<Region2d::Loop> withSteps(const Region2d::Loop& loop, const std::v
   return out;
 }
 
+// The edges of one loop of the combined region, in its order; empty where unsure.
 std::vector<TopoDS_Edge> loopEdges(const Region2d::Loop& original, const std::vector<Source>& sources,
                                    const SegmentGrid& grid, double deflection) {
   const std::optional<Region2d::Loop> stepped = withSteps(original, sources, grid);
