@@ -3,7 +3,6 @@
 
 #include <BRepAdaptor_Curve.hxx>
 #include <BRepTools_WireExplorer.hxx>
-#include <GCPnts_QuasiUniformDeflection.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopoDS.hxx>
 #include <TopoDS_Edge.hxx>
@@ -14,6 +13,7 @@
 #include <set>
 
 #include "layout/labels.hpp"
+#include "slicing/edge_samples.hpp"
 #include "support/occt_guard.hpp"
 #include "support/parallel.hpp"
 #include "support/per_family.hpp"
@@ -70,15 +70,15 @@ void addEdge(const TopoDS_Edge& edge, const PlaneMap& to2d, CutLoop& loop) {
     return;
   }
   // Anything else (B-splines, ellipses) as a polyline within the output deflection.
-  GCPnts_QuasiUniformDeflection points(curve, kOutlineDeflection, first, last);
-  if (!points.IsDone() || points.NbPoints() < 2) {
+  const CurveSamples points = sampleCurve(curve, first, last, kOutlineDeflection);
+  if (points.p.size() < 2) {
     loop.push_back(line(a, b));
     return;
   }
-  const int n = points.NbPoints();
-  for (int i = 1; i < n; ++i) {
-    const int p = reversed ? n + 1 - i : i, q = reversed ? n - i : i + 1;
-    loop.push_back(line(to2d(points.Value(p)), to2d(points.Value(q))));
+  const int n = static_cast<int>(points.p.size());
+  for (int i = 0; i + 1 < n; ++i) {
+    const int p = reversed ? n - 1 - i : i, q = reversed ? n - 2 - i : i + 1;
+    loop.push_back(line(to2d(points.p[p]), to2d(points.p[q])));
   }
 }
 

@@ -1,7 +1,6 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 #include "slicing/brep_slicer.hpp"
 
-#include <BRepAdaptor_Curve.hxx>
 #include <BRepAlgoAPI_Common.hxx>
 #include <BRepBndLib.hxx>
 #include <BRepBuilderAPI_MakeFace.hxx>
@@ -11,7 +10,6 @@
 #include <BRep_Builder.hxx>
 #include <BRep_Tool.hxx>
 #include <Bnd_Box.hxx>
-#include <GCPnts_QuasiUniformDeflection.hxx>
 #include <GProp_GProps.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopTools_ListOfShape.hxx>
@@ -30,6 +28,7 @@
 #include <sstream>
 #include <thread>
 
+#include "slicing/edge_samples.hpp"
 #include "slicing/face_by_face.hpp"
 #include "slicing/section_faces.hpp"
 #include "support/error.hpp"
@@ -49,14 +48,10 @@ Region2d::Loop polygoniseWire(const TopoDS_Wire& wire, const TopoDS_Face& face, 
   Region2d::Loop loop;
   for (BRepTools_WireExplorer it(wire, face); it.More(); it.Next()) {
     const TopoDS_Edge& edge = it.Current();
-    BRepAdaptor_Curve curve(edge);
-    GCPnts_QuasiUniformDeflection sampler(curve, deflection);
-    if (!sampler.IsDone()) throw Error(ErrorKind::Geometry, "cannot sample a section edge");
+    const CurveSamples samples = sampleEdge(edge, deflection);
+    if (samples.p.empty()) throw Error(ErrorKind::Geometry, "cannot sample a section edge");
     std::vector<Vec2> points;
-    for (Standard_Integer i = 1; i <= sampler.NbPoints(); ++i) {
-      const gp_Pnt p = sampler.Value(i);
-      points.push_back(frame.to2d({p.X(), p.Y(), p.Z()}));
-    }
+    for (const gp_Pnt& p : samples.p) points.push_back(frame.to2d({p.X(), p.Y(), p.Z()}));
     if (it.Orientation() == TopAbs_REVERSED) std::reverse(points.begin(), points.end());
     // The last point of an edge is the first of the next one.
     loop.insert(loop.end(), points.begin(), points.end() - (points.empty() ? 0 : 1));

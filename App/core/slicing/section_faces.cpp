@@ -1,13 +1,11 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 #include "slicing/section_faces.hpp"
 
-#include <BRepAdaptor_Curve.hxx>
 #include <BRepAlgoAPI_Section.hxx>
 #include <BRepBuilderAPI_MakeFace.hxx>
 #include <BRepTools_WireExplorer.hxx>
 #include <BRep_Builder.hxx>
 #include <BRep_Tool.hxx>
-#include <GCPnts_QuasiUniformDeflection.hxx>
 #include <ShapeAnalysis_FreeBounds.hxx>
 #include <TopExp.hxx>
 #include <TopExp_Explorer.hxx>
@@ -24,6 +22,7 @@
 #include <cmath>
 
 #include "geometry/region2d.hpp"
+#include "slicing/edge_samples.hpp"
 
 namespace sliceform {
 namespace {
@@ -45,14 +44,10 @@ struct Loop {
 Region2d::Loop polygonise(const TopoDS_Wire& wire, const SliceFrame& frame, double deflection) {
   Region2d::Loop loop;
   for (BRepTools_WireExplorer it(wire); it.More(); it.Next()) {
-    BRepAdaptor_Curve curve(it.Current());
-    GCPnts_QuasiUniformDeflection sampler(curve, deflection);
-    if (!sampler.IsDone() || sampler.NbPoints() < 2) return {};
+    const CurveSamples samples = sampleEdge(it.Current(), deflection);
+    if (samples.p.empty()) return {};
     std::vector<Vec2> points;
-    for (Standard_Integer i = 1; i <= sampler.NbPoints(); ++i) {
-      const gp_Pnt p = sampler.Value(i);
-      points.push_back(frame.to2d({p.X(), p.Y(), p.Z()}));
-    }
+    for (const gp_Pnt& p : samples.p) points.push_back(frame.to2d({p.X(), p.Y(), p.Z()}));
     if (it.Orientation() == TopAbs_REVERSED) std::reverse(points.begin(), points.end());
     loop.insert(loop.end(), points.begin(), points.end() - 1);  // the next edge starts there
   }

@@ -1,0 +1,69 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+#include "slicing/edge_samples.hpp"
+
+#include <BRepAdaptor_Curve.hxx>
+#include <GCPnts_QuasiUniformDeflection.hxx>
+#include <TColStd_Array1OfReal.hxx>
+#include <gp_Vec.hxx>
+
+#include <algorithm>
+
+namespace sliceform {
+namespace {
+
+// How far p lies from the segment a-b.
+double offChord(const gp_Pnt& p, const gp_Pnt& a, const gp_Pnt& b) {
+  const gp_Vec ab(a, b), ap(a, p);
+  const double len2 = ab.SquareMagnitude();
+  if (len2 <= 0) return ap.Magnitude();
+  const double f = std::min(1.0, std::max(0.0, ap.Dot(ab) / len2));
+  return (ap - ab * f).Magnitude();
+}
+
+// The points strictly between (t0, p0) and (t1, p1), halving while the curve's middle lies
+// off the chord. 2^20 pieces of one chord is far past any deflection we ask for.
+void refine(const Adaptor3d_Curve& curve, double t0, const gp_Pnt& p0, double t1, const gp_Pnt& p1,
+            double deflection, int depth, CurveSamples& out) {
+  const double tm = (t0 + t1) / 2;
+  const gp_Pnt pm = curve.Value(tm);
+  if (depth >= 20 || offChord(pm, p0, p1) <= deflection) return;
+  refine(curve, t0, p0, tm, pm, deflection, depth + 1, out);
+  out.t.push_back(tm);
+  out.p.push_back(pm);
+  refine(curve, tm, pm, t1, p1, deflection, depth + 1, out);
+}
+
+}  // namespace
+
+CurveSamples sampleCurve(const Adaptor3d_Curve& curve, double first, double last, double deflection) {
+  CurveSamples out;
+  // The pieces between the curve's C2 breaks (a section's B-spline: knots of multiplicity 7
+  // at degree 8), each sampled on its own.
+  std::vector<double> breaks{first};
+  if (curve.Continuity() < GeomAbs_C2) {
+    const int n = curve.NbIntervals(GeomAbs_C2);
+    TColStd_Array1OfReal bounds(1, n + 1);
+    curve.Intervals(bounds, GeomAbs_C2);
+    for (int i = 2; i <= n; ++i)
+      if (bounds(i) > first && bounds(i) < last) breaks.push_back(bounds(i));
+  }
+  breaks.push_back(last);
+  for (size_t k = 0; k + 1 < breaks.size(); ++k) {
+    GCPnts_QuasiUniformDeflection sampler(curve, deflection, breaks[k], breaks[k + 1]);
+    if (!sampler.IsDone() || sampler.NbPoints() < 2) return {};
+    for (int i = out.t.empty() ? 1 : 2; i <= sampler.NbPoints(); ++i) {
+      if (!out.t.empty())
+        refine(curve, out.t.back(), out.p.back(), sampler.Parameter(i), sampler.Value(i), deflection, 0, out);
+      out.t.push_back(sampler.Parameter(i));
+      out.p.push_back(sampler.Value(i));
+    }
+  }
+  return out;
+}
+
+CurveSamples sampleEdge(const TopoDS_Edge& edge, double deflection) {
+  const BRepAdaptor_Curve curve(edge);
+  return sampleCurve(curve, curve.FirstParameter(), curve.LastParameter(), deflection);
+}
+
+}  // namespace sliceform
