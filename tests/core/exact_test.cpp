@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <BRepAdaptor_Curve.hxx>
+#include <BRepAlgoAPI_Cut.hxx>
 #include <BRepAlgoAPI_Fuse.hxx>
 #include <BRepAlgoAPI_Section.hxx>
 #include <BRepBndLib.hxx>
@@ -13,13 +14,16 @@
 #include <BRepBuilderAPI_MakeWire.hxx>
 #include <BRepCheck_Analyzer.hxx>
 #include <BRepGProp.hxx>
+#include <BRep_Builder.hxx>
 #include <BRep_Tool.hxx>
 #include <Bnd_Box.hxx>
 #include <GProp_GProps.hxx>
 #include <Interface_Static.hxx>
 #include <STEPControl_Reader.hxx>
+#include <TopExp.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopoDS.hxx>
+#include <TopoDS_Compound.hxx>
 #include <gp_Circ.hxx>
 #include <gp_Pln.hxx>
 
@@ -252,6 +256,70 @@ TEST(RebuiltFaces, UnionOfSectionsKeepsArcsAndTheFusedArea) {
       },
       frame, 0, deflection);
   EXPECT_TRUE(stray.IsNull());
+}
+
+// Slots cut from a section by the same rebuild: a disc with a round hole, one slot from
+// the top and one from the bottom. The face keeps its arcs (two of the outer circle, the
+// hole's circle whole) and each slot's three straight edges, with the Boolean cut's area.
+// A disc whose edge's vertex lies off its curve (as sections' vertices do, within their
+// tolerance) is rebuilt too.
+TEST(RebuiltFaces, SlotsCutFromASectionKeepItsArcs) {
+  const gp_Pln plane(gp_Pnt(0, 0, 0), gp_Dir(0, 0, 1));
+  const auto circle = [](double r) {
+    return BRepBuilderAPI_MakeEdge(gp_Circ(gp_Ax2(gp_Pnt(0, 0, 0), gp_Dir(0, 0, 1)), r)).Edge();
+  };
+  BRepBuilderAPI_MakeFace disc(plane, BRepBuilderAPI_MakeWire(circle(10)).Wire());
+  disc.Add(TopoDS::Wire(BRepBuilderAPI_MakeWire(circle(3)).Wire().Reversed()));
+  ASSERT_TRUE(disc.IsDone());
+  const auto rectangle = [&](double x0, double y0, double x1, double y1) {
+    BRepBuilderAPI_MakePolygon p(gp_Pnt(x0, y0, 0), gp_Pnt(x1, y0, 0), gp_Pnt(x1, y1, 0), gp_Pnt(x0, y1, 0),
+                                 Standard_True);
+    return BRepBuilderAPI_MakeFace(plane, p.Wire()).Face();
+  };
+  TopoDS_Compound slots;
+  BRep_Builder builder;
+  builder.MakeCompound(slots);
+  builder.Add(slots, rectangle(-0.2, 5, 0.2, 11));
+  builder.Add(slots, rectangle(-0.2, -11, 0.2, -5));
+  const SliceFrame frame = makeSliceFrame({0, 0, 1}, {0, 1, 0});
+  const double deflection = 1e-3;
+  const auto cut = [&](const TopoDS_Shape& section) {
+    return rebuiltFaces(
+        {section, slots}, [](const std::vector<Region2d>& p) { return p[0].subtract(p[1]); }, frame, 0,
+        deflection);
+  };
+  const TopoDS_Shape rebuilt = cut(disc.Face());
+  ASSERT_FALSE(rebuilt.IsNull());
+  EXPECT_TRUE(BRepCheck_Analyzer(rebuilt).IsValid());
+  int faces = 0, lines = 0, arcs = 0;
+  for (TopExp_Explorer f(rebuilt, TopAbs_FACE); f.More(); f.Next()) ++faces;
+  for (TopExp_Explorer e(rebuilt, TopAbs_EDGE); e.More(); e.Next()) {
+    const GeomAbs_CurveType type = BRepAdaptor_Curve(TopoDS::Edge(e.Current())).GetType();
+    lines += type == GeomAbs_Line;
+    arcs += type == GeomAbs_Circle;
+  }
+  EXPECT_EQ(faces, 1);
+  EXPECT_EQ(lines, 6);
+  EXPECT_EQ(arcs, 3);
+  for (TopExp_Explorer v(rebuilt, TopAbs_VERTEX); v.More(); v.Next())
+    EXPECT_LT(BRep_Tool::Tolerance(TopoDS::Vertex(v.Current())), 1e-5);
+  const auto area = [](const TopoDS_Shape& s) {
+    GProp_GProps props;
+    BRepGProp::SurfaceProperties(s, props);
+    return props.Mass();
+  };
+  BRepAlgoAPI_Cut boolean(disc.Face(), slots);
+  EXPECT_NEAR(area(rebuilt), area(boolean.Shape()), 1e-6);
+  // The outer circle's vertex moved 20 µm off it, within a tolerance that covers it: the
+  // polygons run from edge to edge through the vertex, and the cut is still rebuilt.
+  TopoDS_Edge outer = circle(10);
+  TopoDS_Vertex v0, v1;
+  TopExp::Vertices(outer, v0, v1);
+  builder.UpdateVertex(v0, gp_Pnt(10.00002, 0, 0), 3e-5);
+  const TopoDS_Shape off = cut(BRepBuilderAPI_MakeFace(plane, BRepBuilderAPI_MakeWire(outer).Wire()).Face());
+  ASSERT_FALSE(off.IsNull());
+  const TopoDS_Face whole = BRepBuilderAPI_MakeFace(plane, BRepBuilderAPI_MakeWire(circle(10)).Wire()).Face();
+  EXPECT_NEAR(area(off), area(BRepAlgoAPI_Cut(whole, slots).Shape()), 1e-3);
 }
 
 // A mesh patch's outline loses the points that add nothing within the tolerance: a circle of

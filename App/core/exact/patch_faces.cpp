@@ -321,7 +321,14 @@ std::vector<PatchFace> exactPatches(const Model& model, const Arrangement& a, co
             gp_Vec(frame.normal.x * p.position, frame.normal.y * p.position, frame.normal.z * p.position));
         const TopoDS_Shape section = section0->second.Moved(TopLoc_Location(onto));
         const std::vector<TopoDS_Shape> tools = slotFaces(slotShapes(r.cuts[k], r.params), frame, p.position);
-        const TopoDS_Shape slotted = tools.empty() ? section : boolean(faces(section), tools, true);
+        // Rebuilt from the section's and the slots' own edges, as the union is; the Boolean
+        // cut where that is unsure (exact/rebuilt_faces.hpp).
+        TopoDS_Shape slotted = section;
+        if (!tools.empty())
+          slotted = rebuiltFaces(
+              {section, compound(tools)}, [](const std::vector<Region2d>& q) { return q[0].subtract(q[1]); },
+              frame, p.position, exactDeflection(model.meshDeflection));
+        if (slotted.IsNull()) slotted = boolean(faces(section), tools, true);
         std::vector<TopoDS_Shape> kept;
         for (const TopoDS_Shape& f : faces(slotted))
           if (area(f) >= crumb) kept.push_back(f);
