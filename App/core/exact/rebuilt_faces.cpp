@@ -170,15 +170,16 @@ struct Run {
   std::vector<Vec2> points;  // the loop's vertices along it, its ends included
 };
 
+// Whether q lies on source s's polygon.
+bool onSource(const SegmentGrid& grid, Vec2 q, int s) {
+  const std::vector<Match> matches = grid.at(q);
+  return std::any_of(matches.begin(), matches.end(), [&](const Match& m) { return m.source == s; });
+}
+
 // Whether the segment a-b runs along source s's polygon (both ends and its middle on it).
 bool along(const SegmentGrid& grid, Vec2 a, Vec2 b, int s) {
   const Vec2 mid{(a.x + b.x) / 2, (a.y + b.y) / 2};
-  for (const Vec2 q : {a, b, mid}) {
-    bool on = false;
-    for (const Match& m : grid.at(q)) on = on || m.source == s;
-    if (!on) return false;
-  }
-  return true;
+  return onSource(grid, a, s) && onSource(grid, b, s) && onSource(grid, mid, s);
 }
 
 // The loop with the vertices Clipper's cleaning dropped put back where a segment runs along
@@ -240,11 +241,6 @@ std::vector<TopoDS_Edge> loopEdges(const Region2d::Loop& original, const std::ve
   // on it, the nearest pair.
   std::vector<int> source(n, -1);
   std::vector<double> ta(n), tb(n);
-  const auto onSource = [&](Vec2 q, int s) {
-    for (const Match& m : grid.at(q))
-      if (m.source == s) return true;
-    return false;
-  };
   for (size_t pass = 0; pass < 2; ++pass)  // the second pass lets segment 0 follow the last
     for (size_t j = 0; j < n; ++j) {
       const size_t k = (j + 1) % n;
@@ -254,7 +250,7 @@ std::vector<TopoDS_Edge> loopEdges(const Region2d::Loop& original, const std::ve
       double best = 0;
       for (const Match& a : matches[j])
         for (const Match& b : matches[k]) {
-          if (a.source != b.source || !onSource(mid, a.source)) continue;
+          if (a.source != b.source || !onSource(grid, mid, a.source)) continue;
           const double span = std::abs(b.t - a.t);
           const bool better = chosen < 0 || (a.source == previous && chosen != previous) ||
                               ((a.source == previous) == (chosen == previous) && span < best);
