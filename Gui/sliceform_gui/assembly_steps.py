@@ -17,6 +17,36 @@ translate = FreeCAD.Qt.translate
 # colour: the booklet's orange then came out a dull brown (145, 71, 51 on FreeCAD 1.0) that
 # a reader, and the GUI test's orange count, could miss.
 HIGHLIGHT = (1.0, 0.33, 0.0)
+# ... and it glows: half of it emitted, so a patch turned from the light stays orange, not
+# the dark brown (165, 65, 20) FreeCAD 1.0 drew one time in three in the GUI test.
+GLOW = tuple(0.5 * c for c in HIGHLIGHT)
+
+
+def _material(view):
+    """The shape's material: FreeCAD 1.0's ShapeAppearance (one per face, the first for
+    all when it is uniform) or 0.20's ShapeMaterial. None if the view has neither."""
+    if hasattr(view, "ShapeAppearance"):
+        return tuple(view.ShapeAppearance)
+    return getattr(view, "ShapeMaterial", None)
+
+
+def _set_material(view, material):
+    if hasattr(view, "ShapeAppearance"):
+        view.ShapeAppearance = material
+    elif material is not None:
+        view.ShapeMaterial = material
+
+
+def _glowing(view, on):
+    """The view's material with the glow on, or off (no emission)."""
+    def lit(m):
+        m.EmissiveColor = GLOW if on else (0.0, 0.0, 0.0)
+        return m
+
+    material = _material(view)
+    if isinstance(material, tuple):
+        return tuple(lit(m) for m in material)
+    return None if material is None else lit(material)
 
 current = None  # the open panel, for the GUI test
 
@@ -33,6 +63,8 @@ class AssemblyStepsPanel:
         shown = [sliceform] + list(self.patches.values())
         self.saved = {o.Name: (o.ViewObject.Visibility, getattr(o.ViewObject, "ShapeColor", None)) for o in shown}
         self.colour = {p.PatchId: p.ViewObject.ShapeColor for p in self.patches.values()}
+        # The whole material (emission included), put back last when the panel closes.
+        self.materials = {p.Name: _material(p.ViewObject) for p in self.patches.values()}
         # Filled while stepping: in wireframe (a 2D object's default, and older documents')
         # the highlight colour, a face colour, would not show.
         self.modes = {p.Name: p.ViewObject.DisplayMode for p in self.patches.values()}
@@ -66,7 +98,9 @@ class AssemblyStepsPanel:
             if patch is None:
                 continue
             patch.ViewObject.Visibility = k < self.step
-            patch.ViewObject.ShapeColor = HIGHLIGHT if k == self.step - 1 else self.colour[pid]
+            new = k == self.step - 1
+            patch.ViewObject.ShapeColor = HIGHLIGHT if new else self.colour[pid]
+            _set_material(patch.ViewObject, _glowing(patch.ViewObject, new))
         self.label.setText(self.steps[self.step - 1][1] if self.steps else "")
         self.previous.setEnabled(self.step > 1)
         self.next.setEnabled(self.step < len(self.steps))
@@ -83,6 +117,8 @@ class AssemblyStepsPanel:
                 o.ViewObject.ShapeColor = colour
             if name in self.modes and o.ViewObject.DisplayMode != self.modes[name]:
                 o.ViewObject.DisplayMode = self.modes[name]
+            if name in self.materials:
+                _set_material(o.ViewObject, self.materials[name])
         current = None
 
     def getStandardButtons(self):

@@ -101,7 +101,13 @@ try:
     FreeCADGui.Selection.addSelection(sliceform)
     undo_before = list(doc.UndoNames)
     patches = {p.PatchId: p for p in lookup.patches_of(sliceform)}
-    before = {p.Name: (p.ViewObject.Visibility, tuple(p.ViewObject.ShapeColor)) for p in patches.values()}
+
+    def display(p):  # what the steps may change, and must put back
+        material = assembly_steps._material(p.ViewObject)
+        glow = [tuple(m.EmissiveColor)[:3] for m in (material if isinstance(material, tuple) else [material])]
+        return p.ViewObject.Visibility, tuple(p.ViewObject.ShapeColor), tuple(glow)
+
+    before = {p.Name: display(p) for p in patches.values()}
     FreeCADGui.runCommand("Sliceform_AssemblySteps")
     panel = assembly_steps.current
     assert panel is not None and FreeCADGui.Control.activeDialog(), "the assembly steps did not open"
@@ -113,6 +119,11 @@ try:
     assert sorted(shown) == sorted(order[:3]), (shown, order[:3])
     colour = tuple(patches[order[2]].ViewObject.ShapeColor)[:3]
     assert all(abs(a - b) < 1e-3 for a, b in zip(colour, assembly_steps.HIGHLIGHT)), ("no highlight", colour)
+    def glows(p):
+        return all(abs(a - b) < 1e-3 for a, b in zip(display(p)[2][0], assembly_steps.GLOW))
+
+    assert glows(patches[order[2]]), ("it does not glow", display(patches[order[2]]))
+    assert not glows(patches[order[1]]), "the previous step still glows"
     assert "Step 3 of" in panel.label.text() and order[2] in panel.label.text(), panel.label.text()
     assert not sliceform.ViewObject.Visibility, "the assembled sliceform hides the steps"
     # A picture of step 3 for the README: the task panel beside the 3D view.
@@ -137,7 +148,7 @@ try:
     canvas.save(steps_png)
     assert os.path.getsize(steps_png) > 1000, "empty steps screenshot"
     panel.reject()
-    after = {p.Name: (p.ViewObject.Visibility, tuple(p.ViewObject.ShapeColor)) for p in patches.values()}
+    after = {p.Name: display(p) for p in patches.values()}
     assert after == before, "the steps changed the display for good"
     assert sliceform.ViewObject.Visibility, "the sliceform was not shown again"
     assert list(doc.UndoNames) == undo_before, doc.UndoNames
