@@ -37,6 +37,11 @@ void refine(const Adaptor3d_Curve& curve, double t0, const gp_Pnt& p0, double t1
 
 CurveSamples sampleCurve(const Adaptor3d_Curve& curve, double first, double last, double deflection) {
   CurveSamples out;
+  // Lines and conics are sampled right as they are (their chords are even steps of a known
+  // curvature); only the others pay for a check of every chord.
+  const GeomAbs_CurveType type = curve.GetType();
+  const bool check = type != GeomAbs_Line && type != GeomAbs_Circle && type != GeomAbs_Ellipse &&
+                     type != GeomAbs_Hyperbola && type != GeomAbs_Parabola;
   // The pieces between the curve's C2 breaks (a section's B-spline: knots of multiplicity 7
   // at degree 8), each sampled on its own.
   std::vector<double> breaks{first};
@@ -52,7 +57,7 @@ CurveSamples sampleCurve(const Adaptor3d_Curve& curve, double first, double last
     GCPnts_QuasiUniformDeflection sampler(curve, deflection, breaks[k], breaks[k + 1]);
     if (!sampler.IsDone() || sampler.NbPoints() < 2) return {};
     for (int i = out.t.empty() ? 1 : 2; i <= sampler.NbPoints(); ++i) {
-      if (!out.t.empty())
+      if (check && !out.t.empty())
         refine(curve, out.t.back(), out.p.back(), sampler.Parameter(i), sampler.Value(i), deflection, 0, out);
       out.t.push_back(sampler.Parameter(i));
       out.p.push_back(sampler.Value(i));

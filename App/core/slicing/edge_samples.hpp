@@ -7,8 +7,9 @@
 // a B-spline of 135 poles in occt-misc Bottom.brep, at any deflection: a straight line
 // where the curve bulges 1.27 mm, so the patch's outline on the sheets was straight where
 // its STEP face bulges. On each C2 piece alone it samples right (OCCT 7.6.3:
-// GCPnts_UniformDeflection gave 24 points, the pieces 24). And each chord is checked at its
-// middle and halved until it lies within the deflection.
+// GCPnts_UniformDeflection gave 24 points, the pieces 24). And each chord of a curve that is
+// not a line or a conic is checked at its middle and halved until it lies within the
+// deflection.
 #pragma once
 
 #include <Adaptor3d_Curve.hxx>
