@@ -32,6 +32,11 @@ def main():
     best = max(f["score"] for f in frames)
     designed = [f for f in frames if f["designed"]]
     assert any(f["score"] == best for f in designed), "the best estimate was not designed"
+    # Laid out are the designs that could still win: the chosen one always; one left
+    # without a layout lost on buildability.
+    assert chosen["design"]["sheets"] == report["sheets"]["count"], (chosen, report["sheets"]["count"])
+    for f in designed:
+        assert "sheets" in f["design"] or not f["design"]["buildable"], f
     p = report["parameters"]
     assert all(abs(a - b) < 1e-3 for a, b in zip(p["u"] + p["v"], chosen["u"] + chosen["v"]))
     u, v = chosen["u"], chosen["v"]

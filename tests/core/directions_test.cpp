@@ -106,6 +106,10 @@ TEST(Directions, ModelOnItsSideIsStoodUp) {
   for (const FrameTrial& t : choice.trials) EXPECT_TRUE(t.score > 0 || !t.failure.empty()) << t.name;
   EXPECT_TRUE(c.designed);
   EXPECT_TRUE(c.buildable);
+  EXPECT_TRUE(c.laidOut);
+  EXPECT_EQ(c.sheets, d.layout.packing.sheets);
+  for (const FrameTrial& t : choice.trials)  // not laid out: lost on buildability
+    if (t.designed && !t.laidOut) EXPECT_FALSE(t.buildable) << t.name;
   EXPECT_FALSE(choice.why.empty());
   EXPECT_TRUE(d.directions.automatic);
 }

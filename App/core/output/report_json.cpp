@@ -66,12 +66,13 @@ json directionsJson(const DirectionChoice& c) {
               {"score", t.score},
               {"designed", t.designed}};
     if (!t.failure.empty()) f["failure"] = t.failure;
-    if (t.designed)
+    if (t.designed) {
       f["design"] = {{"buildable", t.buildable},
                      {"quality", qualityJson(t.quality)},
                      {"patches", t.patches},
-                     {"sheets", t.sheets},
                      {"score", t.designScore}};
+      if (t.laidOut) f["design"]["sheets"] = t.sheets;  // not laid out once it could not win
+    }
     frames.push_back(f);
   }
   return {{"mode", "auto"}, {"frames", frames}, {"chosen", c.chosen}, {"why", c.why}};

@@ -22,8 +22,20 @@ auto timed(std::vector<StageTime>& timings, const char* stage, const Progress& p
 
 }  // namespace
 
-Design runDesign(const Model& model, DesignParams params, const Progress& progress,
-                 const PatchesReady& patchesReady, const Deadline* runDeadline, const Design* earlier) {
+Design runDesign(const Model& model, const DesignParams& params, const Progress& progress,
+                 const PatchesReady& patchesReady, const Deadline* deadline, const Design* earlier) {
+  Design d = designPatches(model, params, progress, deadline, earlier);
+  if (patchesReady) patchesReady(d);
+  layOutDesign(d, params.sheet, progress);
+  return d;
+}
+
+void layOutDesign(Design& d, const SheetSpec& sheet, const Progress& progress) {
+  d.layout = timed(d.timings, "layout", progress, [&] { return layOut(layoutInput(d), sheet); });
+}
+
+Design designPatches(const Model& model, DesignParams params, const Progress& progress,
+                     const Deadline* runDeadline, const Design* earlier) {
   // Hinges must hold with the slot cut: the paper beside it is measured from its walls.
   checkSlotParams(params.slots);
   if (!(params.timeLimit >= 0))
@@ -94,8 +106,6 @@ Design runDesign(const Model& model, DesignParams params, const Progress& progre
       if (hinges[h].holds && d.emitted.meets[h]) pins.push_back({hinges[h].u, hinges[h].v});
     return certify(bars, pins);
   });
-  if (patchesReady) patchesReady(d);
-  d.layout = timed(d.timings, "layout", progress, [&] { return layOut(layoutInput(d), params.sheet); });
   return d;
 }
 

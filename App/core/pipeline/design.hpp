@@ -57,9 +57,16 @@ using PatchesReady = std::function<void(const Design& design)>;
 // `deadline`: the run's, when it designs more than once (other frames); by default
 // params.timeLimit from now. `earlier`: a design of the same model, whose first stages are
 // taken where their inputs are the same (arrange()).
-Design runDesign(const Model& model, DesignParams params, const Progress& progress = {},
+Design runDesign(const Model& model, const DesignParams& params, const Progress& progress = {},
                  const PatchesReady& patchesReady = {}, const Deadline* deadline = nullptr,
                  const Design* earlier = nullptr);
+
+// runDesign in its two parts, for a caller that picks among designs before laying one out
+// (designInBestFrame): every stage up to the layout (`layout` left empty; designProblems
+// reads nothing of it), then the layout.
+Design designPatches(const Model& model, DesignParams params, const Progress& progress = {},
+                     const Deadline* deadline = nullptr, const Design* earlier = nullptr);
+void layOutDesign(Design& design, const SheetSpec& sheet, const Progress& progress = {});
 
 // What the layout reads of it (layOut, flattenPatch): refers to the design's own members.
 LayoutInput layoutInput(const Design& design);

@@ -26,8 +26,9 @@ struct FrameTrial {
   bool designed = false;
   bool buildable = false;
   Quality quality;
+  bool laidOut = false;  // only designs still in the running are laid out: `sheets` is 0 if not
   int patches = 0, sheets = 0;
-  double designScore = 0;
+  double designScore = 0;  // the score less the sheets' cost, when laid out
 };
 
 struct DirectionChoice {
