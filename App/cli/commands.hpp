@@ -12,6 +12,7 @@
 #include "frames/hinge_table.hpp"
 #include "frames/stabilize.hpp"
 #include "geometry/vec.hpp"
+#include "model/model.hpp"
 #include "pipeline/parameter_schema.hpp"
 #include "realization/slots.hpp"
 
@@ -22,10 +23,12 @@ using Run = std::function<void()>;
 // What every command asks first: the model file and the two slicing directions.
 struct ModelOptions {
   std::string model;
+  bool fillHoles = false;  // every hole of a mesh, not only the small ones
   std::vector<double> u = parameterSpec("u").direction, v = parameterSpec("v").direction;
 
   Vec3 uDirection() const { return {u[0], u[1], u[2]}; }
   Vec3 vDirection() const { return {v[0], v[1], v[2]}; }
+  double maxHoleSpan() const { return fillHoles ? kFillEveryHole : kMaxFilledHoleSpan; }
 };
 
 void addModelOptions(CLI::App* command, ModelOptions& options);

@@ -189,7 +189,7 @@ void runDesign(DesignOptions o) {
                 "--height measures along W, which --directions auto chooses: give --size instead");
   std::vector<StageTime> readTime;
   Stopwatch clock(readTime);
-  const Model model = sized(readModel(o.model), o);
+  const Model model = sized(readModel(o.model, o.maxHoleSpan()), o);
   clock.lap("read");
   ArrangementParams& p = o.params.arrangement;
   p.u = o.uDirection();
@@ -234,9 +234,10 @@ void runDesign(DesignOptions o) {
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - begun).count();
   if (!refusal.empty() && mayTurn && deadline.passed()) {
     bar.clear();
-    std::printf("directions the file's axes give no buildable design (%s); the time limit (%g s) left "
-                "no time to try others\n",
-                refusal.c_str(), o.params.timeLimit);
+    std::printf(
+        "directions the file's axes give no buildable design (%s); the time limit (%g s) left "
+        "no time to try others\n",
+        refusal.c_str(), o.params.timeLimit);
     if (!given) throw Error(ErrorKind::Unbuildable, refusal);
   } else if (!refusal.empty() && mayTurn) {
     bar.clear();
@@ -285,8 +286,8 @@ void runDesign(DesignOptions o) {
   std::printf("model      %s (%.1f x %.1f x %.1f mm, %zu triangles)\n", model.source.c_str(), size.x, size.y,
               size.z, model.mesh.triangles.size());
   if (model.holesFilled > 0)
-    std::printf("repaired   %zu small hole(s) of the mesh filled (fans about their centres)\n",
-                model.holesFilled);
+    std::printf("repaired   %zu %shole(s) of the mesh filled (fans about their centres)\n", model.holesFilled,
+                o.fillHoles ? "" : "small ");
   if (model.edgesSplit > 0)
     std::printf("repaired   %zu edge(s) where closed parts of the mesh touch split apart\n",
                 model.edgesSplit);

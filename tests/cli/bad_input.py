@@ -50,6 +50,7 @@ def sphere(n=24, r=40.0):
 SV, SF = sphere()
 FLIPPED = SF[:10] + [(a, c, b) for a, b, c in SF[10:40]] + SF[40:]
 MOVED = [(x + 200, y, z) for x, y, z in SV]
+CAP = obj(SV, [f for f in SF if min(SV[i - 1][2] for i in f) < 25])  # a sphere cut open at z 25
 
 # (name, file name, content, options, exit code, stderr pattern; None = success)
 ROWS = [
@@ -67,8 +68,11 @@ ROWS = [
     ("infinite coordinate", "inf.obj", obj([(float("inf"), 0, 0)] + TET_V[1:], TET_F), [], 3,
      r"NaN or infinite coordinate"),
     ("small hole: filled", "open.obj", obj(SV, SF[:-1]), ["-n", "32"], 0, None),
-    ("large hole: refused", "cap.obj", obj(SV, [f for f in SF if min(SV[i - 1][2] for i in f) < 25]), [], 3,
-     r"not closed: 48 boundary edges in 1 hole.*holes up to 20 % of the model's size across are filled"),
+    ("large hole: refused", "cap.obj", CAP, [], 3,
+     r"not closed: 48 boundary edges in 1 hole.*holes up to 20 % of the model's size across are filled, "
+     r"these are larger \(--fill-holes fills every hole"),
+    # The user asks for it: the cut sphere is closed flat and designed (checked below).
+    ("large hole: --fill-holes", "cap.obj", CAP, ["--fill-holes", "-n", "32"], 0, None),
     ("non-manifold edges", "nonmanifold.obj",
      obj(TET_V + [(0, 0, -10)], TET_F + [(1, 2, 5), (2, 3, 5), (3, 1, 5)]), [], 3, r"3 non-manifold edges"),
     ("zero-area triangles only", "zero_area.obj", obj(TET_V, [(1, 1, 2), (2, 2, 3)]), [], 3,
@@ -123,6 +127,21 @@ def main():
             print("{} {:32} exit {} {}".format("ok  " if ok else "FAIL", name, run.returncode, run.stderr.strip()[:150]))
             if not ok:
                 failures.append(name)
+
+        # --fill-holes: the hole was filled at the user's asking, report.json says so, and the
+        # closed cut sphere can be built.
+        import json
+
+        cap = json.load(open(os.path.join(tmp, "out-cap.obj", "report.json")))
+        filled = cap["model"]["holes_filled"] == 1 and cap["model"].get("every_hole_filled") is True
+        filled = filled and cap["verdict"]["buildable"]
+        print("{} --fill-holes: {} hole filled, buildable {}".format(
+            "ok  " if filled else "FAIL", cap["model"]["holes_filled"], cap["verdict"]["buildable"]))
+        if not filled:
+            failures.append("--fill-holes: " + json.dumps(cap["model"]))
+        # Without it the key is absent: report.json of other designs does not change.
+        if "every_hole_filled" in json.load(open(os.path.join(tmp, "out-open.obj", "report.json")))["model"]:
+            failures.append("every_hole_filled written without --fill-holes")
 
         # A failed run leaves what an earlier run wrote as it was.
         ball, out = os.path.join(tmp, "ball.obj"), os.path.join(tmp, "kept")

@@ -272,7 +272,7 @@ Mesh triangulate(const TopoDS_Shape& shape, double deflection) {
 
 }  // namespace
 
-Model readModel(const std::string& path) {
+Model readModel(const std::string& path, double maxHoleSpan) {
   std::error_code ec;
   if (!fs::is_regular_file(path, ec)) throw Error(ErrorKind::BadInput, path + ": no such file");
   if (fs::file_size(path, ec) == 0) throw Error(ErrorKind::BadInput, path + ": the file is empty");
@@ -282,7 +282,8 @@ Model readModel(const std::string& path) {
   if (std::find(std::begin(cad), std::end(cad), ext) != std::end(cad))
     return modelFromShape(occtGuard("reading the CAD file", [&] { return readCad(path, ext); }), path);
   if (std::find(std::begin(meshes), std::end(meshes), ext) != std::end(meshes))
-    return modelFromMesh(occtGuard("reading the mesh file", [&] { return readMeshFile(path, ext); }), path);
+    return modelFromMesh(occtGuard("reading the mesh file", [&] { return readMeshFile(path, ext); }), path,
+                         maxHoleSpan);
   throw Error(ErrorKind::BadInput,
               path + ": unknown format \"" + ext + "\" (expected STEP, IGES, BREP, STL, OBJ or OFF)");
 }
@@ -314,7 +315,7 @@ Model modelFromShape(const TopoDS_Shape& shape, const std::string& source, doubl
   return model;
 }
 
-Model modelFromMesh(const Mesh& mesh, const std::string& source) {
+Model modelFromMesh(const Mesh& mesh, const std::string& source, double maxHoleSpan) {
   validateMesh(mesh, source);
   Model model;
   model.source = source;
@@ -325,7 +326,8 @@ Model modelFromMesh(const Mesh& mesh, const std::string& source) {
   model.bounds = model.mesh.bounds();
   // The sheets apart first: a hole's rim through a point they shared is then a loop of its own.
   model.edgesSplit = splitNonManifoldEdges(model.mesh);
-  model.holesFilled = fillSmallHoles(model.mesh, kMaxFilledHoleSpan * model.bounds.diagonal());
+  model.holesFilled = fillSmallHoles(model.mesh, maxHoleSpan * model.bounds.diagonal());
+  model.everyHoleFilled = maxHoleSpan > kMaxFilledHoleSpan;
   return model;
 }
 
@@ -367,7 +369,8 @@ void requireClosed(const Model& model) {
   std::string message = model.source + ": " + topo.describe();
   if (topo.boundaryEdges > 0 && topo.nonManifoldEdges == 0 && model.kind == SourceKind::Mesh)
     message += "; holes up to " + std::to_string(static_cast<int>(kMaxFilledHoleSpan * 100)) +
-               " % of the model's size across are filled, these are larger";
+               " % of the model's size across are filled, these are larger (--fill-holes fills every hole "
+               "whose rim is a simple loop, with a fan of triangles about its centre: flat where the rim is)";
   if (topo.nonManifoldEdges > 0 && model.kind == SourceKind::Mesh)
     message +=
         "; edges where closed parts meet are split apart, these could not be (an odd number of triangles "

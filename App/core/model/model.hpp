@@ -7,6 +7,7 @@
 
 #include <TopoDS_Shape.hxx>
 
+#include <cmath>
 #include <string>
 
 #include "model/mesh.hpp"
@@ -18,25 +19,29 @@ enum class SourceKind { Brep, Mesh };
 struct Model {
   std::string source;  // file name or a caller's label, for messages
   SourceKind kind = SourceKind::Mesh;
-  TopoDS_Shape shape;         // the solids, for BRep sources; null for meshes
-  Mesh mesh;                  // closed triangle mesh, welded
-  Box3 bounds;                // of the shape (or mesh), mm
-  double meshDeflection = 0;  // how far the triangulation may stray from the shape, mm
-  size_t holesFilled = 0;     // small holes of a mesh source closed on reading
-  size_t edgesSplit = 0;      // edges where closed sheets of a mesh source touch, split on reading
+  TopoDS_Shape shape;            // the solids, for BRep sources; null for meshes
+  Mesh mesh;                     // closed triangle mesh, welded
+  Box3 bounds;                   // of the shape (or mesh), mm
+  double meshDeflection = 0;     // how far the triangulation may stray from the shape, mm
+  size_t holesFilled = 0;        // small holes of a mesh source closed on reading
+  bool everyHoleFilled = false;  // the user asked for every hole filled, not only small ones
+  size_t edgesSplit = 0;         // edges where closed sheets of a mesh source touch, split on reading
 };
 
 // Holes of a mesh are filled when they are at most this share of the model's bounding-box
-// diagonal across; larger ones are refused by requireClosed.
+// diagonal across; larger ones are refused by requireClosed, unless the user asks for every
+// hole filled (`--fill-holes`: kFillEveryHole), as for the Newell teapot's open rim.
 constexpr double kMaxFilledHoleSpan = 0.2;
+constexpr double kFillEveryHole = HUGE_VAL;
 
-// Reads STEP, IGES, BREP, STL, OBJ or OFF (chosen by the file extension).
-Model readModel(const std::string& path);
+// Reads STEP, IGES, BREP, STL, OBJ or OFF (chosen by the file extension); a mesh's holes up
+// to `maxHoleSpan` of its bounding-box diagonal across are filled.
+Model readModel(const std::string& path, double maxHoleSpan = kMaxFilledHoleSpan);
 
 // Solids of `shape` (closed shells are made solids), triangulated for the search stages.
 // `deflection` <= 0 picks 1/1000 of the bounding box diagonal.
 Model modelFromShape(const TopoDS_Shape& shape, const std::string& source, double deflection = 0);
-Model modelFromMesh(const Mesh& mesh, const std::string& source);
+Model modelFromMesh(const Mesh& mesh, const std::string& source, double maxHoleSpan = kMaxFilledHoleSpan);
 
 // The model scaled about the origin so that its longest side is `longestSide` mm.
 Model scaledToSize(const Model& model, double longestSide);

@@ -111,6 +111,7 @@ json reportJson(const Model& model, const DesignParams& params, const Design& d)
                   {"holes_filled", model.holesFilled},
                   {"edges_split", model.edgesSplit},
                   {"bbox_mm", {vec(lo), vec(hi)}}};
+  if (model.everyHoleFilled) doc["model"]["every_hole_filled"] = true;  // --fill-holes; absent if not
   json patches = json::array();
   for (int k = 0; k < static_cast<int>(a.scaffold.patches.size()); ++k) {
     const ScaffoldPatch& sp = a.scaffold.patches[k];
