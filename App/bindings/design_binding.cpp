@@ -34,6 +34,8 @@ struct Run {
   DesignParams params;
   double size = 0, height = 0;
   bool autoDirections = false;  // "directions": "auto" (u and v are then ignored)
+  bool fillHoles = false;       // every hole of a mesh source filled, not only small ones
+  double maxHoleSpan() const { return fillHoles ? kFillEveryHole : kMaxFilledHoleSpan; }
 };
 
 template <typename T>
@@ -89,6 +91,7 @@ Run readParams(py::dict given) {
   if (directions != "given" && directions != "auto")
     throw Error(ErrorKind::BadParameter, "the directions must be given or auto, not " + directions);
   run.autoDirections = directions == "auto";
+  take(d, "fill_holes", run.fillHoles);
   take(d, "size", run.size);
   take(d, "height", run.height);
   if (run.autoDirections && run.height != 0)
@@ -99,13 +102,13 @@ Run readParams(py::dict given) {
   return run;
 }
 
-Model sourceModel(const py::dict& source) {
+Model sourceModel(const py::dict& source, double maxHoleSpan) {
   const std::string name = source.contains("name") ? source["name"].cast<std::string>() : "the source";
   if (source.contains("brep")) return modelFromShape(shapeFromBrep(source["brep"].cast<std::string>()), name);
   if (source.contains("points")) {
     Model model = modelFromMesh(meshFromLists(source["points"].cast<std::vector<Triple>>(),
                                               source["triangles"].cast<std::vector<Index3>>()),
-                                name);
+                                name, maxHoleSpan);
     requireClosed(model);
     return model;
   }
@@ -331,6 +334,10 @@ void bindDesign(py::module_& m) {
               throw Error(
                   ErrorKind::BadParameter,
                   "redesigned() takes the size and height the design was made at: a new size needs design()");
+            if (run.fillHoles != d.model->everyHoleFilled && d.model->kind == SourceKind::Mesh)
+              throw Error(
+                  ErrorKind::BadParameter,
+                  "redesigned() takes the holes filled as the design had them: fill_holes needs design()");
             return designed(d.model, run, progress, &d);
           },
           py::arg("params"), py::arg("progress") = py::none(),
@@ -389,7 +396,7 @@ void bindDesign(py::module_& m) {
       "design",
       [](const py::dict& source, const py::dict& params, const py::object& progress) {
         const Run run = readParams(params);
-        Model model = sourceModel(source);
+        Model model = sourceModel(source, run.maxHoleSpan());
         if (run.height != 0) {
           model =
               scaledToHeight(model, cross(run.params.arrangement.u, run.params.arrangement.v), run.height);

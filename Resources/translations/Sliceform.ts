@@ -5,22 +5,22 @@
 <context>
     <name>App::Property</name>
     <message>
-        <location filename="../../App/sliceform_app/children.py" line="75"/>
+        <location filename="../../App/sliceform_app/children.py" line="74"/>
         <source>The sliceform this patch belongs to</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../App/sliceform_app/children.py" line="76"/>
+        <location filename="../../App/sliceform_app/children.py" line="74"/>
         <source>Position of the patch in the design</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../App/sliceform_app/children.py" line="77"/>
+        <location filename="../../App/sliceform_app/children.py" line="74"/>
         <source>The id engraved on the patch</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../App/sliceform_app/children.py" line="110"/>
+        <location filename="../../App/sliceform_app/children.py" line="114"/>
         <source>The patch shown on its sheet</source>
         <translation type="unfinished"></translation>
     </message>
@@ -40,12 +40,12 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../App/sliceform_app/feature.py" line="39"/>
+        <location filename="../../App/sliceform_app/feature.py" line="41"/>
         <source>The solid, body or mesh to design a sliceform for</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../App/sliceform_app/feature.py" line="62"/>
+        <location filename="../../App/sliceform_app/feature.py" line="64"/>
         <source>Patches and pages made for the design</source>
         <translation type="unfinished"></translation>
     </message>
@@ -135,135 +135,140 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../build/translations/schema_strings.py" line="10"/>
+        <location filename="../../build/translations/schema_strings.py" line="12"/>
         <source>slices per direction</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../build/translations/schema_strings.py" line="12"/>
+        <location filename="../../build/translations/schema_strings.py" line="14"/>
         <source>mm between slices; overrides slices (0: slices sets it)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../build/translations/schema_strings.py" line="14"/>
+        <location filename="../../build/translations/schema_strings.py" line="16"/>
         <source>cylinder error budget, relative to each part&apos;s volume (the paper&apos;s tauA)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../build/translations/schema_strings.py" line="16"/>
+        <location filename="../../build/translations/schema_strings.py" line="18"/>
         <source>Reeb branch merge threshold, a weight ratio (the paper&apos;s tauM)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../build/translations/schema_strings.py" line="18"/>
+        <location filename="../../build/translations/schema_strings.py" line="20"/>
         <source>both families, or u / v for one dominant direction</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../build/translations/schema_strings.py" line="20"/>
+        <location filename="../../build/translations/schema_strings.py" line="22"/>
         <source>scale the model so its longest side is this many mm (0: keep its size; mesh files carry no unit)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../build/translations/schema_strings.py" line="22"/>
+        <location filename="../../build/translations/schema_strings.py" line="24"/>
         <source>seconds the design may take before its searches stop with the best found, which is not called buildable (0: no limit)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../build/translations/schema_strings.py" line="24"/>
+        <location filename="../../build/translations/schema_strings.py" line="26"/>
         <source>mm a hinge must be long to carry load</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../build/translations/schema_strings.py" line="26"/>
+        <location filename="../../build/translations/schema_strings.py" line="28"/>
         <source>mm of paper to keep on each side of a slot</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../build/translations/schema_strings.py" line="28"/>
+        <location filename="../../build/translations/schema_strings.py" line="30"/>
         <source>mm between two patches of one family that overlap seen along their normal, so paper is left between their slots (0: slot width + min slot-edge distance)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../build/translations/schema_strings.py" line="30"/>
+        <location filename="../../build/translations/schema_strings.py" line="32"/>
         <source>mm; add patches in long cylinders so none is farther apart (0: off)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../build/translations/schema_strings.py" line="32"/>
+        <location filename="../../build/translations/schema_strings.py" line="34"/>
         <source>mm of material (0.3 for card, 3 for plywood)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../build/translations/schema_strings.py" line="34"/>
+        <location filename="../../build/translations/schema_strings.py" line="36"/>
         <source>mm added to the thickness for the slot width</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../build/translations/schema_strings.py" line="36"/>
+        <location filename="../../build/translations/schema_strings.py" line="38"/>
         <source>mm the cutter removes; cut paths are moved out by half</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../build/translations/schema_strings.py" line="38"/>
+        <location filename="../../build/translations/schema_strings.py" line="40"/>
         <source>square, or round closed slot ends</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../build/translations/schema_strings.py" line="40"/>
+        <location filename="../../build/translations/schema_strings.py" line="42"/>
         <source>up or down: which way U-patches are slotted first (V the other way)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../build/translations/schema_strings.py" line="42"/>
+        <location filename="../../build/translations/schema_strings.py" line="44"/>
         <source>sheet size: A4, A3, Letter, or WxH in mm (e.g. 600x400)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../build/translations/schema_strings.py" line="44"/>
+        <location filename="../../build/translations/schema_strings.py" line="46"/>
         <source>mm kept clear along every sheet edge</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../build/translations/schema_strings.py" line="46"/>
+        <location filename="../../build/translations/schema_strings.py" line="48"/>
         <source>mm between patches on a sheet</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../build/translations/schema_strings.py" line="48"/>
+        <location filename="../../build/translations/schema_strings.py" line="50"/>
         <source>patches may be turned by quarters to nest better; off (--no-rotate) keeps every patch upright on the sheet (grain, printed textures)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../build/translations/schema_strings.py" line="50"/>
+        <location filename="../../build/translations/schema_strings.py" line="52"/>
         <source>degrees between the families in the 3D assembly: 90 is popped up, small angles fold it flat</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../App/sliceform_app/children.py" line="139"/>
+        <location filename="../../App/sliceform_app/children.py" line="143"/>
         <source>The patch whose labels these are</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../App/sliceform_app/children.py" line="141"/>
+        <location filename="../../App/sliceform_app/children.py" line="143"/>
         <source>Which part of the patch&apos;s engraving this is (0: the first)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../build/translations/schema_strings.py" line="10"/>
+        <source>fill every hole of a mesh whose rim is a simple loop, not only those up to 20 % of its size across, with a fan of triangles about its centre (flat where the rim is)</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
 <context>
     <name>Sliceform</name>
     <message>
-        <location filename="../../Gui/sliceform_gui/assembly_steps.py" line="39"/>
+        <location filename="../../Gui/sliceform_gui/assembly_steps.py" line="75"/>
         <source>Assembly steps</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../Gui/sliceform_gui/assembly_steps.py" line="45"/>
+        <location filename="../../Gui/sliceform_gui/assembly_steps.py" line="81"/>
         <source>Previous</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../Gui/sliceform_gui/assembly_steps.py" line="46"/>
+        <location filename="../../Gui/sliceform_gui/assembly_steps.py" line="82"/>
         <source>Next</source>
         <translation type="unfinished"></translation>
     </message>
@@ -323,17 +328,17 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../build/translations/schema_strings.py" line="17"/>
+        <location filename="../../build/translations/schema_strings.py" line="19"/>
         <source>Scheme</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../build/translations/schema_strings.py" line="41"/>
+        <location filename="../../build/translations/schema_strings.py" line="43"/>
         <source>Sheet</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../build/translations/schema_strings.py" line="37"/>
+        <location filename="../../build/translations/schema_strings.py" line="39"/>
         <source>Slot ends</source>
         <translation type="unfinished"></translation>
     </message>
@@ -358,22 +363,22 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../App/sliceform_app/children.py" line="117"/>
+        <location filename="../../App/sliceform_app/children.py" line="122"/>
         <source>this drawing&apos;s patch or sliceform was deleted</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../App/sliceform_app/feature.py" line="106"/>
+        <location filename="../../App/sliceform_app/feature.py" line="108"/>
         <source>the sliceform has no Source: link a solid, body or mesh</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../App/sliceform_app/feature.py" line="373"/>
+        <location filename="../../App/sliceform_app/feature.py" line="403"/>
         <source>cannot be built: </source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../App/sliceform_app/feature.py" line="373"/>
+        <location filename="../../App/sliceform_app/feature.py" line="403"/>
         <source>see the report</source>
         <translation type="unfinished"></translation>
     </message>
@@ -398,103 +403,108 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../build/translations/schema_strings.py" line="9"/>
+        <location filename="../../build/translations/schema_strings.py" line="11"/>
         <source>Slices</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../build/translations/schema_strings.py" line="11"/>
+        <location filename="../../build/translations/schema_strings.py" line="13"/>
         <source>Interval</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../build/translations/schema_strings.py" line="13"/>
+        <location filename="../../build/translations/schema_strings.py" line="15"/>
         <source>Cylinder error budget</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../build/translations/schema_strings.py" line="15"/>
+        <location filename="../../build/translations/schema_strings.py" line="17"/>
         <source>Branch merge threshold</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../build/translations/schema_strings.py" line="19"/>
+        <location filename="../../build/translations/schema_strings.py" line="21"/>
         <source>Size</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../build/translations/schema_strings.py" line="21"/>
+        <location filename="../../build/translations/schema_strings.py" line="23"/>
         <source>Time limit</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../build/translations/schema_strings.py" line="23"/>
+        <location filename="../../build/translations/schema_strings.py" line="25"/>
         <source>Shortest hinge</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../build/translations/schema_strings.py" line="25"/>
+        <location filename="../../build/translations/schema_strings.py" line="27"/>
         <source>Paper beside a slot</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../build/translations/schema_strings.py" line="27"/>
+        <location filename="../../build/translations/schema_strings.py" line="29"/>
         <source>Closest patches</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../build/translations/schema_strings.py" line="29"/>
+        <location filename="../../build/translations/schema_strings.py" line="31"/>
         <source>Farthest patches</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../build/translations/schema_strings.py" line="31"/>
+        <location filename="../../build/translations/schema_strings.py" line="33"/>
         <source>Thickness</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../build/translations/schema_strings.py" line="33"/>
+        <location filename="../../build/translations/schema_strings.py" line="35"/>
         <source>Slot clearance</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../build/translations/schema_strings.py" line="35"/>
+        <location filename="../../build/translations/schema_strings.py" line="37"/>
         <source>Cutter kerf</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../build/translations/schema_strings.py" line="39"/>
+        <location filename="../../build/translations/schema_strings.py" line="41"/>
         <source>U slots</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../build/translations/schema_strings.py" line="43"/>
+        <location filename="../../build/translations/schema_strings.py" line="45"/>
         <source>Sheet margin</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../build/translations/schema_strings.py" line="45"/>
+        <location filename="../../build/translations/schema_strings.py" line="47"/>
         <source>Space between patches</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../build/translations/schema_strings.py" line="47"/>
+        <location filename="../../build/translations/schema_strings.py" line="49"/>
         <source>Rotate</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../build/translations/schema_strings.py" line="49"/>
+        <location filename="../../build/translations/schema_strings.py" line="51"/>
         <source>Fold angle</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../App/sliceform_app/children.py" line="148"/>
+        <location filename="../../App/sliceform_app/children.py" line="153"/>
         <source>this engraving&apos;s patch or sliceform was deleted</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
         <location filename="../../Gui/sliceform_gui/preferences.py" line="31"/>
         <source>Defaults for new sliceforms (material, sheets, slicing)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../build/translations/schema_strings.py" line="9"/>
+        <source>Fill every hole</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

@@ -292,6 +292,7 @@ class TestSliceformFeature(unittest.TestCase):
         two.addMesh(far)
         rows = [
             ("open mesh", lambda: self._mesh(open_mesh), {}, "holes up to 20 % of the model's size across are filled"),
+            ("open mesh, the way out named", lambda: self._mesh(open_mesh), {}, "(FillHoles fills every hole"),
             ("two solids", lambda: self._mesh(two), {}, "2 separate solids"),
             ("a face", lambda: self._part(Part.makePlane(50, 50)), {}, "no closed solid"),
             ("an open shell", lambda: self._part(Part.Shell(Part.makeBox(20, 20, 20).Faces[1:])), {}, "no closed solid"),
@@ -308,6 +309,17 @@ class TestSliceformFeature(unittest.TestCase):
             self.assertTrue(source.isValid(), name)
             if brep is not None:
                 self.assertEqual(source.Shape.exportBrepToString(), brep, name)
+        # FillHoles on: the same open mesh is closed flat and designed; off again, refused again
+        # (the design made with the holes filled is not taken for it).
+        sliceform = feature.makeSliceform(self._mesh(open_mesh), Slices=16, FillHoles=True)
+        self.assertTrue(sliceform.isValid(), sliceform.getStatusString())
+        self.assertTrue(sliceform.Buildable)
+        report = json.loads(sliceform.Proxy.report_json(sliceform))
+        self.assertEqual((report["model"]["holes_filled"], report["model"].get("every_hole_filled")), (1, True))
+        sliceform.FillHoles = False
+        self.doc.recompute()
+        self.assertFalse(sliceform.isValid())
+        self.assertIn("FillHoles", sliceform.getStatusString())
         path = os.path.join(tempfile.mkdtemp(), "errors.FCStd")
         self.doc.saveAs(path)  # the document stays saveable with features in error
         self.assertGreater(os.path.getsize(path), 0)

@@ -50,6 +50,12 @@ std::vector<ParamSpec> make() {
       direction("u", "UDirection", {a.u.x, a.u.y, a.u.z}, "normal of the U family of patches, x,y,z"));
   out.push_back(direction("v", "VDirection", {a.v.x, a.v.y, a.v.z},
                           "normal of the V family, x,y,z, orthogonal to U (W = U x V is up)"));
+  ParamSpec fill =
+      real("fill_holes", "--fill-holes", "FillHoles", "Slicing", "", 0, 0, 1, 1, "Fill every hole",
+           "fill every hole of a mesh whose rim is a simple loop, not only those up to 20 % of "
+           "its size across, with a fan of triangles about its centre (flat where the rim is)");
+  fill.kind = ParamKind::Bool;
+  out.push_back(fill);
   ParamSpec slices = real("slices", "--slices", "Slices", "Slicing", "", a.slices, 2, 4096, 8, "Slices",
                           "slices per direction");
   slices.kind = ParamKind::Integer;
