@@ -18,6 +18,15 @@ ParamSpec real(std::string key, std::string option, std::string property, std::s
   return s;
 }
 
+// An on/off switch: default `on`.
+ParamSpec flag(std::string key, std::string option, std::string property, std::string group, bool on,
+               std::string label, std::string help) {
+  ParamSpec s = real(std::move(key), std::move(option), std::move(property), std::move(group), "", on, 0, 1,
+                     1, std::move(label), std::move(help));
+  s.kind = ParamKind::Bool;
+  return s;
+}
+
 ParamSpec choice(std::string key, std::string option, std::string property, std::string group,
                  std::vector<std::string> choices, std::string label, std::string help) {
   ParamSpec s;
@@ -50,12 +59,12 @@ std::vector<ParamSpec> make() {
       direction("u", "UDirection", {a.u.x, a.u.y, a.u.z}, "normal of the U family of patches, x,y,z"));
   out.push_back(direction("v", "VDirection", {a.v.x, a.v.y, a.v.z},
                           "normal of the V family, x,y,z, orthogonal to U (W = U x V is up)"));
-  ParamSpec fill =
-      real("fill_holes", "--fill-holes", "FillHoles", "Slicing", "", 0, 0, 1, 1, "Fill every hole",
-           "fill every hole of a mesh whose rim is a simple loop, not only those up to 20 % of "
-           "its size across, with a fan of triangles about its centre (flat where the rim is)");
-  fill.kind = ParamKind::Bool;
-  out.push_back(fill);
+  out.push_back(
+      flag("fill_holes", "--fill-holes", "FillHoles", "Slicing", false, "Fill every hole",
+           "fill every hole of a mesh whose rim is a simple loop, not only those up to " +
+               std::to_string(static_cast<int>(kMaxFilledHoleSpan * 100)) +
+               " % of its size across, with a fan of triangles about its centre (flat where the rim "
+               "is)"));
   ParamSpec slices = real("slices", "--slices", "Slices", "Slicing", "", a.slices, 2, 4096, 8, "Slices",
                           "slices per direction");
   slices.kind = ParamKind::Integer;
@@ -110,12 +119,9 @@ std::vector<ParamSpec> make() {
                      "mm kept clear along every sheet edge"));
   out.push_back(real("spacing", "--spacing", "Spacing", "Sheets", "mm", 3, 0, 1000, 1,
                      "Space between patches", "mm between patches on a sheet"));
-  ParamSpec rotate =
-      real("rotate", "--no-rotate", "Rotate", "Sheets", "", 1, 0, 1, 1, "Rotate",
-           "patches may be turned by quarters to nest better; off (--no-rotate) keeps every patch "
-           "upright on the sheet (grain, printed textures)");
-  rotate.kind = ParamKind::Bool;
-  out.push_back(rotate);
+  out.push_back(flag("rotate", "--no-rotate", "Rotate", "Sheets", true, "Rotate",
+                     "patches may be turned by quarters to nest better; off (--no-rotate) keeps every patch "
+                     "upright on the sheet (grain, printed textures)"));
   out.push_back(real("fold_angle", "--fold-angle", "FoldAngle", "Assembly", "deg", 90, 1, 90, 5, "Fold angle",
                      "degrees between the families in the 3D assembly: 90 is popped up, small angles fold it "
                      "flat"));
