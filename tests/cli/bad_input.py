@@ -52,10 +52,25 @@ FLIPPED = SF[:10] + [(a, c, b) for a, b, c in SF[10:40]] + SF[40:]
 MOVED = [(x + 200, y, z) for x, y, z in SV]
 CAP = obj(SV, [f for f in SF if min(SV[i - 1][2] for i in f) < 25])  # a sphere cut open at z 25
 # Two triangles of the sphere that share one vertex and no edge, taken out: two small holes
-# whose rims touch at that vertex, one boundary loop through it twice.
+# whose rims touch at that vertex (the triangles left there make two fans).
 _A = 500
 _B = next(k for k, f in enumerate(SF) if len(set(f) & set(SF[_A])) == 1)
 PINCH = obj(SV, [f for k, f in enumerate(SF) if k not in (_A, _B)])
+
+
+def _every_other_around(v):
+    """Every other triangle about vertex v, in their order around it: three holes touching
+    at v, between three fans of one triangle each."""
+    fan = [k for k, f in enumerate(SF) if v in f]
+    order = [fan.pop(0)]
+    while fan:
+        k = next(k for k in fan if len(set(SF[k]) & set(SF[order[-1]])) == 2)
+        order.append(k)
+        fan.remove(k)
+    return order[::2]
+
+
+PINCH3 = obj(SV, [f for k, f in enumerate(SF) if k not in _every_other_around(SF[500][0])])
 
 # (name, file name, content, options, exit code, stderr pattern; None = success)
 ROWS = [
@@ -78,8 +93,9 @@ ROWS = [
      r"the rim is a simple loop: these are larger, or their rims touch \(--fill-holes fills every hole"),
     # The user asks for it: the cut sphere is closed flat and designed (checked below).
     ("large hole: --fill-holes", "cap.obj", CAP, ["--fill-holes", "-n", "32"], 0, None),
-    ("holes that touch: left even with --fill-holes", "pinch.obj", PINCH, ["--fill-holes"], 3,
-     r"not closed: 6 boundary edges in 1 hole.*--fill-holes\): the rims of these touch themselves or each other"),
+    ("small holes touching at a vertex: filled", "pinch.obj", PINCH, ["-n", "32"], 0, None),
+    ("three holes at a vertex: left even with --fill-holes", "pinch3.obj", PINCH3, ["--fill-holes"], 3,
+     r"not closed: 9 boundary edges in 1 hole.*--fill-holes\): the rims of these touch themselves or each other"),
     ("non-manifold edges", "nonmanifold.obj",
      obj(TET_V + [(0, 0, -10)], TET_F + [(1, 2, 5), (2, 3, 5), (3, 1, 5)]), [], 3, r"3 non-manifold edges"),
     ("zero-area triangles only", "zero_area.obj", obj(TET_V, [(1, 1, 2), (2, 2, 3)]), [], 3,
@@ -146,6 +162,10 @@ def main():
             "ok  " if filled else "FAIL", cap["model"]["holes_filled"], cap["verdict"]["buildable"]))
         if not filled:
             failures.append("--fill-holes: " + json.dumps(cap["model"]))
+        # The two holes touching at a vertex were split there and filled, one fan each.
+        pinch = json.load(open(os.path.join(tmp, "out-pinch.obj", "report.json")))
+        if pinch["model"]["holes_filled"] != 2 or not pinch["verdict"]["buildable"]:
+            failures.append("holes touching at a vertex: " + json.dumps(pinch["model"]))
         # Without it the key is absent: report.json of other designs does not change.
         if "every_hole_filled" in json.load(open(os.path.join(tmp, "out-open.obj", "report.json")))["model"]:
             failures.append("every_hole_filled written without --fill-holes")

@@ -82,14 +82,28 @@ TEST(Mesh, SmallHolesAreFilledLargeOnesLeft) {
   EXPECT_EQ(fillSmallHoles(cube, 3.0), 1u);
   EXPECT_TRUE(analyseTopology(cube).closed());
   EXPECT_EQ(cube.triangles.size(), 11u + 3u);  // a fan of three about the hole's centre
-  // Two holes meeting at a vertex (a pinch): no fan is sure to be right, so none is added.
-  // An octahedron without two faces that share only its top vertex.
+  // Two holes meeting at a vertex (a pinch), where the triangles left make two fans: split
+  // there, each filled. An octahedron without two faces that share only its top vertex.
   Mesh octahedron;
   octahedron.vertices = {{0, 0, 1}, {1, 0, 0}, {0, 1, 0}, {-1, 0, 0}, {0, -1, 0}, {0, 0, -1}};
   octahedron.triangles = {{0, 2, 3}, {0, 4, 1}, {5, 2, 1}, {5, 3, 2}, {5, 4, 3}, {5, 1, 4}};
   ASSERT_EQ(analyseTopology(octahedron).boundaryEdges, 6u);
-  EXPECT_EQ(fillSmallHoles(octahedron, 10.0), 0u);
-  EXPECT_EQ(octahedron.triangles.size(), 6u);
+  EXPECT_EQ(fillSmallHoles(octahedron, 10.0), 2u);
+  EXPECT_TRUE(analyseTopology(octahedron).closed());
+  EXPECT_EQ(octahedron.triangles.size(), 6u + 2 * 3u);
+  // Three holes at a vertex, between three fans: their order around it is not topology's to
+  // say, so none is filled. A hexagonal bipyramid without every other face at its top.
+  Mesh bipyramid;
+  bipyramid.vertices = {{0, 0, 1}, {0, 0, -1}};
+  for (int k = 0; k < 6; ++k) bipyramid.vertices.push_back({std::cos(k * M_PI / 3), std::sin(k * M_PI / 3), 0});
+  for (uint32_t k = 0; k < 6; ++k) {
+    const uint32_t a = 2 + k, b = 2 + (k + 1) % 6;
+    if (k % 2 == 0) bipyramid.triangles.push_back({0, a, b});
+    bipyramid.triangles.push_back({1, b, a});
+  }
+  ASSERT_EQ(analyseTopology(bipyramid).boundaryEdges, 9u);
+  EXPECT_EQ(fillSmallHoles(bipyramid, 10.0), 0u);
+  EXPECT_EQ(bipyramid.triangles.size(), 9u);
 }
 
 TEST(Mesh, NonManifoldAndDegenerateTriangles) {
