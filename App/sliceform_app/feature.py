@@ -277,7 +277,8 @@ class Sliceform:
         size = params.pop("size", 0.0)
         source = source_of(obj.Source, size)
         # FillHoles changes the model a mesh is read into: a design of it is another source's.
-        source_key = _source_key(source) + ("+every hole filled" if params.get("fill_holes") else "")
+        filled = params.get("fill_holes") and "points" in source
+        source_key = _source_key(source) + ("+every hole filled" if filled else "")
         return source, params, source_key, _key(source_key, dict(params, size=size))
 
     def _made_again(self, source, params, source_key, key, progress):

@@ -251,7 +251,7 @@
     </message>
     <message>
         <location filename="../../build/translations/schema_strings.py" line="10"/>
-        <source>fill every hole of a mesh whose rim is a simple loop, not only those up to 20 % of its size across, with a fan of triangles about its centre (flat where the rim is)</source>
+        <source>fill every hole of a mesh, not only those up to 20 % of its size across, with a fan of triangles about its centre (flat where the rim is)</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -373,12 +373,12 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../App/sliceform_app/feature.py" line="403"/>
+        <location filename="../../App/sliceform_app/feature.py" line="404"/>
         <source>cannot be built: </source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../App/sliceform_app/feature.py" line="403"/>
+        <location filename="../../App/sliceform_app/feature.py" line="404"/>
         <source>see the report</source>
         <translation type="unfinished"></translation>
     </message>

@@ -62,9 +62,12 @@ size_t fillPinchedHoles(Mesh& mesh, double maxSpan) {
   }
   for (const auto& [v, from] : out)
     if (from.size() == 2) around[v];
-  for (size_t k = 0; k < mesh.triangles.size(); ++k)
-    for (uint32_t v : mesh.triangles[k])
+  for (size_t k = 0; k < mesh.triangles.size(); ++k) {
+    const auto& t = mesh.triangles[k];
+    if (t[0] == t[1] || t[1] == t[2] || t[2] == t[0]) continue;  // it would join every fan
+    for (uint32_t v : t)
       if (auto it = around.find(v); it != around.end()) it->second.push_back(k);
+  }
   std::vector<long> next(edges.size(), -1);  // the boundary edge after each, along its rim
   for (const auto& [v, from] : out) {
     const auto to = in.find(v);
@@ -140,7 +143,9 @@ size_t fillSmallHoles(Mesh& mesh, double maxSpan) {
   // fillPinchedHoles.
   std::map<uint32_t, bool> done;
   size_t filled = 0;
+  bool pinched = false;  // a boundary vertex with more than two boundary neighbours
   for (const auto& [start, neighbours] : next) {
+    pinched = pinched || neighbours.size() > 2;
     if (done[start] || neighbours.size() != 2) continue;
     std::vector<uint32_t> loop{start};
     uint32_t previous = start, current = neighbours[0];
@@ -161,8 +166,8 @@ size_t fillSmallHoles(Mesh& mesh, double maxSpan) {
     if (simple && fan(mesh, loop, maxSpan)) ++filled;
   }
   // Then the rims that touch, split where they do: only where the simple rims are done, so
-  // a mesh whose holes are all simple is filled as it always was.
-  return filled + fillPinchedHoles(mesh, maxSpan);
+  // a mesh whose holes are all simple is filled as it always was (and not read again).
+  return filled + (pinched ? fillPinchedHoles(mesh, maxSpan) : 0);
 }
 
 }  // namespace sliceform

@@ -367,17 +367,18 @@ void requireClosed(const Model& model) {
   const MeshTopology topo = analyseTopology(model.mesh);
   if (topo.closed()) return;
   std::string message = model.source + ": " + topo.describe();
-  // Only a rim that is a simple loop gets a fan: a rim that touches itself or another hole's
-  // (a pinch) is left, whatever its size, and the message says so.
+  // A rim that touches itself or another hole's where three or more fans of triangles meet
+  // gets no fan (fill_holes.cpp), whatever its size, and the message says so.
   if (topo.boundaryEdges > 0 && model.kind == SourceKind::Mesh && model.everyHoleFilled)
     message +=
-        "; every hole whose rim is a simple loop was filled (--fill-holes): the rims of these touch "
-        "themselves or each other";
+        "; every hole that could be was filled (--fill-holes): the rims of these touch where three or "
+        "more fans of triangles meet";
   else if (topo.boundaryEdges > 0 && topo.nonManifoldEdges == 0 && model.kind == SourceKind::Mesh)
-    message += "; holes up to " + std::to_string(static_cast<int>(kMaxFilledHoleSpan * 100)) +
-               " % of the model's size across are filled where the rim is a simple loop: these are larger, "
-               "or their rims touch (--fill-holes fills every hole whose rim is a simple loop, with a fan of "
-               "triangles about its centre: flat where the rim is)";
+    message +=
+        "; holes up to " + std::to_string(static_cast<int>(kMaxFilledHoleSpan * 100)) +
+        " % of the model's size across are filled: these are larger, or their rims touch where three or "
+        "more fans of triangles meet (--fill-holes fills every hole, with a fan of triangles about its "
+        "centre: flat where the rim is)";
   if (topo.nonManifoldEdges > 0 && model.kind == SourceKind::Mesh)
     message +=
         "; edges where closed parts meet are split apart, these could not be (an odd number of triangles "

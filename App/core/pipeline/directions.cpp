@@ -319,58 +319,70 @@ Design designInBestFrame(const Model& model, DesignParams params, DirectionChoic
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 
   // The best in full; the runner-up only when the best cannot be built (designing close
-  // runners-up too took 4-10 times one design on fandisk, the dragon and man). Buildable
-  // first, then the score on the full design, sheets counted. Buildability reads nothing of
-  // the layout, so only designs still in the running are laid out: a buildable runner-up
-  // wins over the best without laying out the best (anchor_dense: 0.3 s of 2.8).
+  // runners-up too took 4-10 times one design on fandisk, the dragon and man), or when its
+  // layout fails (a patch larger than the sheet). Buildable first, then the score on the
+  // full design, sheets counted. Buildability reads nothing of the layout, so a design is
+  // laid out only while it can still win: a buildable runner-up wins over the best without
+  // the best's layout (anchor_dense: 0.3 s of 2.8).
   const std::vector<size_t> order = ranked(trials);
-  std::vector<std::pair<size_t, Design>> designs;
+  std::vector<std::pair<size_t, Design>> designs;  // those still in the running
   std::exception_ptr firstFailure;
-  double designing = 0;  // ms in full designs, the chosen one's taken off at the end
-  const auto since = [](std::chrono::steady_clock::time_point t) {
-    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t).count();
-  };
+  int attempted = 0;
   const auto designsStart = std::chrono::steady_clock::now();
-  for (size_t r = 0; r < order.size() && r < 2; ++r) {
+  const auto failed = [&](FrameTrial& t, const Error& e) {  // in a handler: e is the current one
+    t.failure = e.what();
+    if (!firstFailure) firstFailure = std::current_exception();
+  };
+  // Lays out trials[k]'s design; false, with the trial's failure, when that fails.
+  const auto laidOut = [&](size_t k, Design& d) {
+    try {
+      layOutDesign(d, params.sheet, progress);
+    } catch (const Error& e) {
+      failed(trials[k], e);
+      return false;
+    }
+    trials[k].laidOut = true;
+    trials[k].sheets = d.layout.packing.sheets;
+    return true;
+  };
+  bool settled = false;  // a buildable design is laid out: it is the one
+  for (size_t r = 0; r < order.size() && r < 2 && !settled; ++r) {
     FrameTrial& t = trials[order[r]];
     if (t.score < 0) break;
-    if (r == 1 && designs.size() == 1 && trials[designs[0].first].buildable) break;
     if (r == 1 && deadline.passed()) break;  // the time is up: the best frame's design stands
     DesignParams p = params;
     p.arrangement.u = t.u, p.arrangement.v = t.v;
+    ++attempted;
     try {
       Design d = designPatches(model, p, progress, &deadline, earlier);
       t.designed = true;
       t.buildable = designProblems(d).empty();
       t.quality = d.arrangement.quality;
       t.patches = static_cast<int>(d.patches.size());
-      designs.emplace_back(order[r], std::move(d));
+      if (!t.buildable) {
+        designs.emplace_back(order[r], std::move(d));
+      } else if (laidOut(order[r], d)) {
+        designs.clear();  // an unbuildable best before it loses without a layout
+        designs.emplace_back(order[r], std::move(d));
+        settled = true;
+      }
     } catch (const Error& e) {
-      t.failure = e.what();
-      if (!firstFailure) firstFailure = std::current_exception();
+      failed(t, e);
     }
   }
+  // None buildable: each laid out, and sheets decide.
+  if (!settled)
+    designs.erase(
+        std::remove_if(designs.begin(), designs.end(), [&](auto& e) { return !laidOut(e.first, e.second); }),
+        designs.end());
   if (designs.empty()) {
     if (firstFailure) std::rethrow_exception(firstFailure);
     throw Error(ErrorKind::Unbuildable,
                 model.source + ": no slicing directions tried give a design: " +
                     (trials.empty() ? std::string("none tried") : trials[order[0]].failure));
   }
-  const bool anyBuildable =
-      std::any_of(designs.begin(), designs.end(), [&](const auto& e) { return trials[e.first].buildable; });
-  if (anyBuildable)
-    designs.erase(std::remove_if(designs.begin(), designs.end(),
-                                 [&](const auto& e) { return !trials[e.first].buildable; }),
-                  designs.end());
-  // Laid out: the winner, or every design when none is buildable (sheets then decide). The
-  // winner's 3D files are begun beside its layout when it is the only one.
-  if (designs.size() == 1 && patchesReady) patchesReady(designs.front().second);
-  for (auto& [k, d] : designs) {
-    layOutDesign(d, params.sheet, progress);
-    trials[k].laidOut = true;
-    trials[k].sheets = d.layout.packing.sheets;
-  }
-  designing = since(designsStart);
+  const double designing =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - designsStart).count();
   for (FrameTrial& t : trials)
     if (t.designed && !t.laidOut) t.designScore = score(t.quality, t.stands);
   int fewest = designs.front().second.layout.packing.sheets;
@@ -399,10 +411,12 @@ Design designInBestFrame(const Model& model, DesignParams params, DirectionChoic
   double chosenMs = 0;
   for (const StageTime& s : d.timings) chosenMs += s.ms;
   d.timings.insert(d.timings.begin(), {"directions (estimates)", estimating});
-  if (designed > 1)
+  if (attempted > 1)
     d.timings.insert(d.timings.begin() + 1,
                      {"directions (frames designed, not chosen)", std::max(0.0, designing - chosenMs)});
-  if (designs.size() > 1 && patchesReady) patchesReady(d);
+  // Once, with the design returned: a layout that fails sends the choice on to another
+  // frame, so the 3D files cannot start before it.
+  if (patchesReady) patchesReady(d);
   return d;
 }
 

@@ -61,7 +61,7 @@ std::vector<ParamSpec> make() {
                           "normal of the V family, x,y,z, orthogonal to U (W = U x V is up)"));
   out.push_back(
       flag("fill_holes", "--fill-holes", "FillHoles", "Slicing", false, "Fill every hole",
-           "fill every hole of a mesh whose rim is a simple loop, not only those up to " +
+           "fill every hole of a mesh, not only those up to " +
                std::to_string(static_cast<int>(kMaxFilledHoleSpan * 100)) +
                " % of its size across, with a fan of triangles about its centre (flat where the rim "
                "is)"));
