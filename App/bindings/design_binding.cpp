@@ -35,7 +35,6 @@ struct Run {
   double size = 0, height = 0;
   bool autoDirections = false;  // "directions": "auto" (u and v are then ignored)
   bool fillHoles = false;       // every hole of a mesh source filled, not only small ones
-  double maxHoleSpan() const { return fillHoles ? kFillEveryHole : kMaxFilledHoleSpan; }
 };
 
 template <typename T>
@@ -102,13 +101,13 @@ Run readParams(py::dict given) {
   return run;
 }
 
-Model sourceModel(const py::dict& source, double maxHoleSpan) {
+Model sourceModel(const py::dict& source, bool fillEveryHole) {
   const std::string name = source.contains("name") ? source["name"].cast<std::string>() : "the source";
   if (source.contains("brep")) return modelFromShape(shapeFromBrep(source["brep"].cast<std::string>()), name);
   if (source.contains("points")) {
     Model model = modelFromMesh(meshFromLists(source["points"].cast<std::vector<Triple>>(),
                                               source["triangles"].cast<std::vector<Index3>>()),
-                                name, maxHoleSpan);
+                                name, fillEveryHole);
     requireClosed(model);
     return model;
   }
@@ -396,7 +395,7 @@ void bindDesign(py::module_& m) {
       "design",
       [](const py::dict& source, const py::dict& params, const py::object& progress) {
         const Run run = readParams(params);
-        Model model = sourceModel(source, run.maxHoleSpan());
+        Model model = sourceModel(source, run.fillHoles);
         if (run.height != 0) {
           model =
               scaledToHeight(model, cross(run.params.arrangement.u, run.params.arrangement.v), run.height);

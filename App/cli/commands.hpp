@@ -12,7 +12,6 @@
 #include "frames/hinge_table.hpp"
 #include "frames/stabilize.hpp"
 #include "geometry/vec.hpp"
-#include "model/model.hpp"
 #include "pipeline/parameter_schema.hpp"
 #include "realization/slots.hpp"
 
@@ -28,7 +27,6 @@ struct ModelOptions {
 
   Vec3 uDirection() const { return {u[0], u[1], u[2]}; }
   Vec3 vDirection() const { return {v[0], v[1], v[2]}; }
-  double maxHoleSpan() const { return fillHoles ? kFillEveryHole : kMaxFilledHoleSpan; }
 };
 
 void addModelOptions(CLI::App* command, ModelOptions& options);

@@ -189,7 +189,7 @@ void runDesign(DesignOptions o) {
                 "--height measures along W, which --directions auto chooses: give --size instead");
   std::vector<StageTime> readTime;
   Stopwatch clock(readTime);
-  const Model model = sized(readModel(o.model, o.maxHoleSpan()), o);
+  const Model model = sized(readModel(o.model, o.fillHoles), o);
   clock.lap("read");
   ArrangementParams& p = o.params.arrangement;
   p.u = o.uDirection();

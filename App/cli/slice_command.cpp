@@ -30,7 +30,7 @@ double msSince(std::chrono::steady_clock::time_point start) {
 }
 
 void runSlice(const SliceOptions& o) {
-  const Model model = readModel(o.model, o.maxHoleSpan());
+  const Model model = readModel(o.model, o.fillHoles);
   requireClosed(model);
   const Vec3 u = o.uDirection(), v = o.vDirection(), w = cross(u, v);
   if (!(norm(w) > 0)) throw Error(ErrorKind::BadParameter, "--u and --v must not be parallel");

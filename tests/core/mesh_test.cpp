@@ -95,7 +95,8 @@ TEST(Mesh, SmallHolesAreFilledLargeOnesLeft) {
   // say, so none is filled. A hexagonal bipyramid without every other face at its top.
   Mesh bipyramid;
   bipyramid.vertices = {{0, 0, 1}, {0, 0, -1}};
-  for (int k = 0; k < 6; ++k) bipyramid.vertices.push_back({std::cos(k * M_PI / 3), std::sin(k * M_PI / 3), 0});
+  for (int k = 0; k < 6; ++k)
+    bipyramid.vertices.push_back({std::cos(k * M_PI / 3), std::sin(k * M_PI / 3), 0});
   for (uint32_t k = 0; k < 6; ++k) {
     const uint32_t a = 2 + k, b = 2 + (k + 1) % 6;
     if (k % 2 == 0) bipyramid.triangles.push_back({0, a, b});

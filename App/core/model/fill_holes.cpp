@@ -6,6 +6,7 @@
 // Orientation of the new triangles does not matter: the slicer fills sections by the
 // even-odd rule.
 #include <algorithm>
+#include <array>
 #include <map>
 #include <numeric>
 #include <vector>
@@ -14,6 +15,10 @@
 
 namespace sliceform {
 namespace {
+
+bool degenerate(const std::array<uint32_t, 3>& t) {
+  return t[0] == t[1] || t[1] == t[2] || t[2] == t[0];
+}
 
 // Closes a loop of vertices with a fan about its centroid, if it is at most maxSpan across.
 bool fan(Mesh& mesh, const std::vector<uint32_t>& loop, double maxSpan) {
@@ -41,7 +46,7 @@ bool fan(Mesh& mesh, const std::vector<uint32_t>& loop, double maxSpan) {
 size_t fillPinchedHoles(Mesh& mesh, double maxSpan) {
   std::map<uint64_t, int> uses;
   for (const auto& t : mesh.triangles)
-    if (t[0] != t[1] && t[1] != t[2] && t[2] != t[0])
+    if (!degenerate(t))
       for (int i = 0; i < 3; ++i) ++uses[edgeKey(t[i], t[(i + 1) % 3])];
   // Boundary edges, directed as their triangle runs; the triangles at each of their ends.
   std::vector<std::pair<uint32_t, uint32_t>> edges;
@@ -50,7 +55,7 @@ size_t fillPinchedHoles(Mesh& mesh, double maxSpan) {
   std::map<uint32_t, std::vector<size_t>> around;   // triangles at a pinched vertex
   for (size_t k = 0; k < mesh.triangles.size(); ++k) {
     const auto& t = mesh.triangles[k];
-    if (t[0] == t[1] || t[1] == t[2] || t[2] == t[0]) continue;
+    if (degenerate(t)) continue;
     for (int i = 0; i < 3; ++i) {
       const uint32_t a = t[i], b = t[(i + 1) % 3];
       if (uses[edgeKey(a, b)] != 1) continue;
@@ -64,7 +69,7 @@ size_t fillPinchedHoles(Mesh& mesh, double maxSpan) {
     if (from.size() == 2) around[v];
   for (size_t k = 0; k < mesh.triangles.size(); ++k) {
     const auto& t = mesh.triangles[k];
-    if (t[0] == t[1] || t[1] == t[2] || t[2] == t[0]) continue;  // it would join every fan
+    if (degenerate(t)) continue;  // it would join every fan
     for (uint32_t v : t)
       if (auto it = around.find(v); it != around.end()) it->second.push_back(k);
   }
@@ -130,7 +135,7 @@ size_t fillPinchedHoles(Mesh& mesh, double maxSpan) {
 size_t fillSmallHoles(Mesh& mesh, double maxSpan) {
   std::map<uint64_t, int> uses;
   for (const auto& t : mesh.triangles)
-    if (t[0] != t[1] && t[1] != t[2] && t[2] != t[0])
+    if (!degenerate(t))
       for (int i = 0; i < 3; ++i) ++uses[edgeKey(t[i], t[(i + 1) % 3])];
   std::map<uint32_t, std::vector<uint32_t>> next;  // boundary neighbours of each vertex
   for (const auto& [key, count] : uses) {

@@ -29,6 +29,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -272,7 +273,7 @@ Mesh triangulate(const TopoDS_Shape& shape, double deflection) {
 
 }  // namespace
 
-Model readModel(const std::string& path, double maxHoleSpan) {
+Model readModel(const std::string& path, bool fillEveryHole) {
   std::error_code ec;
   if (!fs::is_regular_file(path, ec)) throw Error(ErrorKind::BadInput, path + ": no such file");
   if (fs::file_size(path, ec) == 0) throw Error(ErrorKind::BadInput, path + ": the file is empty");
@@ -283,7 +284,7 @@ Model readModel(const std::string& path, double maxHoleSpan) {
     return modelFromShape(occtGuard("reading the CAD file", [&] { return readCad(path, ext); }), path);
   if (std::find(std::begin(meshes), std::end(meshes), ext) != std::end(meshes))
     return modelFromMesh(occtGuard("reading the mesh file", [&] { return readMeshFile(path, ext); }), path,
-                         maxHoleSpan);
+                         fillEveryHole);
   throw Error(ErrorKind::BadInput,
               path + ": unknown format \"" + ext + "\" (expected STEP, IGES, BREP, STL, OBJ or OFF)");
 }
@@ -315,7 +316,7 @@ Model modelFromShape(const TopoDS_Shape& shape, const std::string& source, doubl
   return model;
 }
 
-Model modelFromMesh(const Mesh& mesh, const std::string& source, double maxHoleSpan) {
+Model modelFromMesh(const Mesh& mesh, const std::string& source, bool fillEveryHole) {
   validateMesh(mesh, source);
   Model model;
   model.source = source;
@@ -326,8 +327,9 @@ Model modelFromMesh(const Mesh& mesh, const std::string& source, double maxHoleS
   model.bounds = model.mesh.bounds();
   // The sheets apart first: a hole's rim through a point they shared is then a loop of its own.
   model.edgesSplit = splitNonManifoldEdges(model.mesh);
-  model.holesFilled = fillSmallHoles(model.mesh, maxHoleSpan * model.bounds.diagonal());
-  model.everyHoleFilled = maxHoleSpan > kMaxFilledHoleSpan;
+  model.holesFilled =
+      fillSmallHoles(model.mesh, fillEveryHole ? HUGE_VAL : kMaxFilledHoleSpan * model.bounds.diagonal());
+  model.everyHoleFilled = fillEveryHole;
   return model;
 }
 

@@ -7,7 +7,6 @@
 
 #include <TopoDS_Shape.hxx>
 
-#include <cmath>
 #include <string>
 
 #include "model/mesh.hpp"
@@ -30,18 +29,17 @@ struct Model {
 
 // Holes of a mesh are filled when they are at most this share of the model's bounding-box
 // diagonal across; larger ones are refused by requireClosed, unless the user asks for every
-// hole filled (`--fill-holes`: kFillEveryHole), as for the Newell teapot's open rim.
+// hole filled (`--fill-holes`: fillEveryHole), as for the Newell teapot's open rim.
 constexpr double kMaxFilledHoleSpan = 0.2;
-constexpr double kFillEveryHole = HUGE_VAL;
 
-// Reads STEP, IGES, BREP, STL, OBJ or OFF (chosen by the file extension); a mesh's holes up
-// to `maxHoleSpan` of its bounding-box diagonal across are filled.
-Model readModel(const std::string& path, double maxHoleSpan = kMaxFilledHoleSpan);
+// Reads STEP, IGES, BREP, STL, OBJ or OFF (chosen by the file extension); a mesh's holes are
+// filled, the small ones or (fillEveryHole) all.
+Model readModel(const std::string& path, bool fillEveryHole = false);
 
 // Solids of `shape` (closed shells are made solids), triangulated for the search stages.
 // `deflection` <= 0 picks 1/1000 of the bounding box diagonal.
 Model modelFromShape(const TopoDS_Shape& shape, const std::string& source, double deflection = 0);
-Model modelFromMesh(const Mesh& mesh, const std::string& source, double maxHoleSpan = kMaxFilledHoleSpan);
+Model modelFromMesh(const Mesh& mesh, const std::string& source, bool fillEveryHole = false);
 
 // The model scaled about the origin so that its longest side is `longestSide` mm.
 Model scaledToSize(const Model& model, double longestSide);
