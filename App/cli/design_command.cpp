@@ -136,7 +136,7 @@ void printLayout(const SheetLayout& l) {
         leaders += p.partnersOnLeaders;
     if (p.unlabelled.empty()) continue;
     std::string slots;  // "V5 (slot for U11)"
-    for (const std::string& partner : p.unlabelled) slots += (slots.empty() ? "" : ", ") + partner;
+    for (const UnlabelledSlot& slot : p.unlabelled) slots += (slots.empty() ? "" : ", ") + slot.partner;
     without += (without.empty() ? "" : "; ") + p.id + " (slot for " + slots + ")";
   }
   std::printf("sheets     %d %s (%.0f x %.0f mm), %.0f %% used; shelf layout would take %d (%.0f %%)\n",

@@ -5,11 +5,14 @@
 #include <gtest/gtest.h>
 
 #include <cairo.h>
+#include <jpeglib.h>
 #include <BRepBndLib.hxx>
 #include <Bnd_Box.hxx>
 #include <nlohmann/json.hpp>
 
 #include <cstdint>
+#include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -21,6 +24,7 @@
 #include "exact/patch_faces.hpp"
 #include "output/assembly_png.hpp"
 #include "output/gltf.hpp"
+#include "output/jpeg.hpp"
 #include "realization/realize.hpp"
 #include "support/error.hpp"
 #include "test_support.hpp"
@@ -242,6 +246,84 @@ TEST(AssemblyOutput, PictureShowsBothPaperColours) {
   EXPECT_GT(warm / pixels, 0.03);
   EXPECT_GT(cool / pixels, 0.03);
   EXPECT_GT(dark / pixels, 0.005) << "edge lines";
+}
+
+// Channels of two 0x00RRGGBB colours differ by more than `tolerance`.
+bool differ(uint32_t a, uint32_t b, int tolerance) {
+  for (int shift = 0; shift <= 16; shift += 8)
+    if (std::abs(int(a >> shift & 255) - int(b >> shift & 255)) > tolerance) return true;
+  return false;
+}
+
+// The booklet's step pictures redraw only the new panel's box: after every panel is
+// added, the picture is the whole assembly's but for the last panel, which is highlighted.
+// A box kept stale (a panel missing, an outline lost) shows as many more pixels apart.
+TEST(AssemblyOutput, GrowingAssemblyEndsAsTheWholePicture) {
+  const Design& d = torus();
+  const std::vector<Panel3> panels = assemblyPanels(d.arrangement, d.faces, 60);
+  ASSERT_GT(panels.size(), 10u);
+  const Picture whole = drawAssembly(panels, 300);
+  GrowingAssembly growing(panels, 300);
+  std::vector<Picture> steps;
+  for (size_t k = 0; k < panels.size(); ++k) steps.push_back(growing.add(static_cast<int>(k)));
+  const Picture& last = steps.back();
+  ASSERT_EQ(last.width, whole.width);
+  ASSERT_EQ(last.height, whole.height);
+  size_t apart = 0, highlight = 0;
+  for (size_t at = 0; at < whole.pixels.size(); ++at) {
+    if (!differ(last.pixels[at], kHighlight, 60))
+      ++highlight;
+    else if (differ(last.pixels[at], whole.pixels[at], 40))
+      ++apart;
+  }
+  EXPECT_GT(highlight, 50u);
+  EXPECT_LT(apart, whole.pixels.size() / 100) << "of " << whole.pixels.size();
+  // Each step adds to the one before: a pixel of paper stays paper (or its outline).
+  for (size_t k = 1; k < steps.size(); ++k) {
+    size_t lost = 0;
+    for (size_t at = 0; at < whole.pixels.size(); ++at)
+      if (steps[k - 1].pixels[at] != 0xFFFFFF && steps[k].pixels[at] == 0xFFFFFF) ++lost;
+    EXPECT_EQ(lost, 0u) << "step " << k;
+  }
+}
+
+// The booklet's pictures go into its PDF as JPEG: the bytes decode (with libjpeg) to the
+// picture's size and colours.
+TEST(AssemblyOutput, JpegDecodesToThePicture) {
+  Picture p;
+  p.width = 64;
+  p.height = 40;
+  for (int y = 0; y < p.height; ++y)
+    for (int x = 0; x < p.width; ++x) p.pixels.push_back(x < 32 ? kHighlight : 0xFFFFFF);
+  const std::string bytes = jpegBytes(p, 85);
+  ASSERT_GT(bytes.size(), 4u);
+  EXPECT_EQ(static_cast<unsigned char>(bytes[0]), 0xFF);
+  EXPECT_EQ(static_cast<unsigned char>(bytes[1]), 0xD8);  // start of image
+  jpeg_decompress_struct info{};
+  jpeg_error_mgr error{};
+  info.err = jpeg_std_error(&error);
+  jpeg_create_decompress(&info);
+  jpeg_mem_src(&info, reinterpret_cast<const unsigned char*>(bytes.data()), bytes.size());
+  ASSERT_EQ(jpeg_read_header(&info, TRUE), JPEG_HEADER_OK);
+  jpeg_start_decompress(&info);
+  EXPECT_EQ(int(info.output_width), p.width);
+  EXPECT_EQ(int(info.output_height), p.height);
+  ASSERT_EQ(info.output_components, 3);
+  std::vector<unsigned char> row(info.output_width * 3);
+  int wrong = 0;
+  while (info.output_scanline < info.output_height) {
+    JSAMPROW rows[1] = {row.data()};
+    jpeg_read_scanlines(&info, rows, 1);
+    for (int x = 0; x < p.width; ++x) {
+      const uint32_t got = uint32_t(row[3 * x]) << 16 | uint32_t(row[3 * x + 1]) << 8 | row[3 * x + 2];
+      if (differ(got, x < 32 ? kHighlight : 0xFFFFFF, 12)) ++wrong;
+    }
+  }
+  jpeg_finish_decompress(&info);
+  jpeg_destroy_decompress(&info);
+  EXPECT_EQ(wrong, 0);
+  Picture empty;
+  EXPECT_THROW(jpegBytes(empty, 85), Error);
 }
 
 TEST(AssemblyOutput, PictureRejectsNothingToDrawAndBadFolders) {

@@ -181,7 +181,7 @@ FlatPatch flattenPatch(const LayoutInput& d, int k) {
   for (const LabelSpot& s : spots) {
     const auto found = labelled.find(s.text);
     if (found == labelled.end())
-      flat.unlabelled.push_back(s.text);
+      flat.unlabelled.push_back({s.text, {s.x, s.y}});
     else
       labelled.erase(found);
   }

@@ -53,18 +53,25 @@ struct Label {
   Stroke leader;                // from the slot to the box, where the label stands off; or empty
 };
 
+// A slot left without a partner label: the partner's id, and the middle of the slot's
+// stretch of its hinge line, where the booklet marks it.
+struct UnlabelledSlot {
+  std::string partner;
+  Vec2 at;
+};
+
 struct FlatPatch {
   int patch = -1;
   std::string id;  // "U3", "V7"
   Family family = Family::U;
-  std::vector<CutLoop> cut;             // outer loops and holes (slots already cut), kerf applied
-  Region2d outline;                     // the paper, polygonised (kOutlineDeflection)
-  Label name;                           // the patch id, well inside the patch
-  std::vector<Label> partners;          // the partner's id beside each slot
-  std::vector<std::string> unlabelled;  // the partner ids of slots with no room for a label
-  int partnersOnLeaders = 0;            // partner labels that stand off, with a leader to their slot
-  int step = 0;                         // its place in the assembly order, 1-based (0: none)
-  Label stepLabel;                      // "#step" beside the id (no strokes when it has no room)
+  std::vector<CutLoop> cut;                // outer loops and holes (slots already cut), kerf applied
+  Region2d outline;                        // the paper, polygonised (kOutlineDeflection)
+  Label name;                              // the patch id, well inside the patch
+  std::vector<Label> partners;             // the partner's id beside each slot
+  std::vector<UnlabelledSlot> unlabelled;  // the slots with no room for a partner label
+  int partnersOnLeaders = 0;               // partner labels that stand off, with a leader to their slot
+  int step = 0;                            // its place in the assembly order, 1-based (0: none)
+  Label stepLabel;                         // "#step" beside the id (no strokes when it has no room)
 };
 
 // One patch of a design laid flat and labelled (patch: an index into input.patches); the

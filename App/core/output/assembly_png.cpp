@@ -37,7 +37,8 @@ constexpr uint32_t kWhite = 0xFFFFFF;
 
 // 0x00RRGGBB from channels in [0, 1].
 uint32_t packed(float r, float g, float b) {
-  const auto c = [](float v) { return static_cast<uint32_t>(std::lround(std::clamp(v, 0.0f, 1.0f) * 255)); };
+  // Rounded half up (not std::lround, a library call per channel and pixel).
+  const auto c = [](float v) { return static_cast<uint32_t>(std::clamp(v, 0.0f, 1.0f) * 255 + 0.5f); };
   return c(r) << 16 | c(g) << 8 | c(b);
 }
 
@@ -222,7 +223,9 @@ void fillPanel(Raster& r, const Placement& pl, const Panel3& panel, Fill mode, R
   const int row0 = std::max(band.lo, static_cast<int>(std::ceil(top - 0.5)));
   const int row1 = std::min(band.hi, static_cast<int>(std::ceil(bottom - 0.5)));
   if (row0 >= row1) return;
-  std::vector<std::vector<double>> crossings(row1 - row0);
+  // Where the outlines cross each row, as (row, x) in one list sorted by row then x: one
+  // allocation a panel, not one a row.
+  std::vector<std::pair<int, double>> crossings;
   for (const auto& loop : loops)
     for (size_t i = 0; i < loop.size(); ++i) {
       const Vec3& a = loop[i];
@@ -231,38 +234,49 @@ void fillPanel(Raster& r, const Placement& pl, const Panel3& panel, Fill mode, R
       const double lo = std::min(a.y, b.y), hi = std::max(a.y, b.y);
       for (int row = std::max(row0, static_cast<int>(std::ceil(lo - 0.5)));
            row < std::min(row1, static_cast<int>(std::ceil(hi - 0.5))); ++row)
-        crossings[row - row0].push_back(a.x + (row + 0.5 - a.y) * (b.x - a.x) / (b.y - a.y));
+        crossings.emplace_back(row, a.x + (row + 0.5 - a.y) * (b.x - a.x) / (b.y - a.y));
     }
+  std::sort(crossings.begin(), crossings.end());
+  // A paper pixel's colour is linear in its depth: channel = base + slope * (nearest - z),
+  // the tone and fade of the first measurement folded into two numbers a channel.
   const float tone = shade(n, pl.view);
   const PaperColour paper = paperColour(panel.family);
-  const double fadePerDepth = kFade / std::max(pl.nearest - pl.farthest, 1e-9);
+  const float fadePerDepth = static_cast<float>(kFade / std::max(pl.nearest - pl.farthest, 1e-9));
+  float base[3], slope[3];
+  const double channels[3] = {paper.r, paper.g, paper.b};
+  for (int k = 0; k < 3; ++k) {
+    base[k] = tone * float(channels[k]);
+    slope[k] = fadePerDepth * (1 - base[k]);
+  }
   const double step = depthAt(1.5, 0.5) - depthAt(0.5, 0.5);  // depth is linear along a row
-  for (int row = row0; row < row1; ++row) {
-    std::vector<double>& xs = crossings[row - row0];
-    std::sort(xs.begin(), xs.end());
-    for (size_t i = 0; i + 1 < xs.size(); i += 2) {
-      const int col0 = std::max(0, static_cast<int>(std::ceil(xs[i] - 0.5)));
-      const int col1 = std::min(r.width, static_cast<int>(std::ceil(xs[i + 1] - 0.5)));
-      const double z0 = depthAt(col0 + 0.5, row + 0.5);
-      for (int col = col0; col < col1; ++col) {
-        const double z = z0 + (col - col0) * step;
-        const size_t at = size_t(row) * r.width + col;
-        if (mode == Fill::XRay) {
-          if (z < r.depth[at] - 1e-3) r.colour[at] = halfway(r.colour[at], kHighlight);
-          continue;
-        }
-        // The highlight is filled again over itself: its own depth lets it through.
-        if (mode == Fill::Highlight ? z < r.depth[at] - 1e-6 : z <= r.depth[at]) continue;
-        r.depth[at] = static_cast<float>(z);
-        if (mode == Fill::Highlight) {  // flat: every pixel of it is the colour a reader looks for
-          r.colour[at] = kHighlight;
-          continue;
-        }
-        const float fade = static_cast<float>(fadePerDepth * (pl.nearest - z));
-        r.colour[at] =
-            packed(tone * float(paper.r) * (1 - fade) + fade, tone * float(paper.g) * (1 - fade) + fade,
-                   tone * float(paper.b) * (1 - fade) + fade);
+  for (size_t i = 0; i + 1 < crossings.size(); i += 2) {
+    // Even-odd: a closed loop crosses each row an even number of times; should rounding
+    // ever leave a row odd, its last crossing is dropped rather than paired with the next row.
+    if (crossings[i].first != crossings[i + 1].first) {
+      --i;
+      continue;
+    }
+    const int row = crossings[i].first;
+    const int col0 = std::max(0, static_cast<int>(std::ceil(crossings[i].second - 0.5)));
+    const int col1 = std::min(r.width, static_cast<int>(std::ceil(crossings[i + 1].second - 0.5)));
+    const double z0 = depthAt(col0 + 0.5, row + 0.5);
+    uint32_t* colour = r.colour.get() + size_t(row) * r.width;
+    float* depth = r.depth.get() + size_t(row) * r.width;
+    for (int col = col0; col < col1; ++col) {
+      const double z = z0 + (col - col0) * step;
+      if (mode == Fill::XRay) {
+        if (z < depth[col] - 1e-3) colour[col] = halfway(colour[col], kHighlight);
+        continue;
       }
+      // The highlight is filled again over itself: its own depth lets it through.
+      if (mode == Fill::Highlight ? z < depth[col] - 1e-6 : z <= depth[col]) continue;
+      depth[col] = static_cast<float>(z);
+      if (mode == Fill::Highlight) {  // flat: every pixel of it is the colour a reader looks for
+        colour[col] = kHighlight;
+        continue;
+      }
+      const float fade = static_cast<float>(pl.nearest - z);
+      colour[col] = packed(base[0] + slope[0] * fade, base[1] + slope[1] * fade, base[2] + slope[2] * fade);
     }
   }
 }
@@ -306,25 +320,37 @@ void keepEdges(std::vector<double>& lines, const Raster& r, const Placement& pl,
                 [&](size_t at, double z) { lines[at] = std::max(lines[at], z + bias); });
 }
 
-// Averages each kSupersample x kSupersample block into one opaque pixel.
+// Averages each kSupersample x kSupersample block of a width x height raster into one
+// opaque pixel of `out`, the raster's top left going to out's pixel (outX, outY);
+// pixel(x, y) is the raster's colour there.
+template <class Colour>
+void downsampleInto(int width, int height, Picture& out, int outX, int outY, Colour pixel) {
+  for (int y = 0; y < height / kSupersample; ++y)
+    for (int x = 0; x < width / kSupersample; ++x) {
+      uint32_t sum[3] = {0, 0, 0};
+      for (int dy = 0; dy < kSupersample; ++dy)
+        for (int dx = 0; dx < kSupersample; ++dx) {
+          const uint32_t c = pixel(x * kSupersample + dx, y * kSupersample + dy);
+          for (int k = 0; k < 3; ++k) sum[k] += (c >> (16 - 8 * k)) & 255;
+        }
+      constexpr uint32_t n = kSupersample * kSupersample;
+      out.pixels[size_t(outY + y) * out.width + outX + x] =
+          (sum[0] + n / 2) / n << 16 | (sum[1] + n / 2) / n << 8 | (sum[2] + n / 2) / n;
+    }
+}
+
+// The whole raster, downsampled on every core in bands of rows.
 Picture downsample(const Raster& r) {
   Picture out;
   out.width = r.width / kSupersample;
   out.height = r.height / kSupersample;
   out.pixels.resize(size_t(out.width) * out.height);
-  parallelFor(size_t(out.height), [&](size_t row) {
-    const int y = static_cast<int>(row);
-    for (int x = 0; x < out.width; ++x) {
-      uint32_t sum[3] = {0, 0, 0};
-      for (int dy = 0; dy < kSupersample; ++dy)
-        for (int dx = 0; dx < kSupersample; ++dx) {
-          const uint32_t c = r.colour[size_t(y * kSupersample + dy) * r.width + x * kSupersample + dx];
-          for (int k = 0; k < 3; ++k) sum[k] += (c >> (16 - 8 * k)) & 255;
-        }
-      constexpr uint32_t n = kSupersample * kSupersample;
-      out.pixels[size_t(y) * out.width + x] =
-          (sum[0] + n / 2) / n << 16 | (sum[1] + n / 2) / n << 8 | (sum[2] + n / 2) / n;
-    }
+  const int bands = 16, rows = (out.height + bands - 1) / bands;
+  parallelFor(bands, [&](size_t b) {
+    const int y0 = std::min(out.height, static_cast<int>(b) * rows);
+    const int y1 = std::min(out.height, (static_cast<int>(b) + 1) * rows);
+    downsampleInto(r.width, (y1 - y0) * kSupersample, out, 0, y0,
+                   [&](int x, int y) { return r.colour[size_t(y0 * kSupersample + y) * r.width + x]; });
   });
   return out;
 }
@@ -382,33 +408,98 @@ struct GrowingAssembly::State {
   Placement pl;
   Raster built;               // every panel added so far, filled
   std::vector<double> lines;  // and their outlines (keepEdges)
+  Picture shown;              // the two together, downsampled: the picture before a step
   int thickness;
   double bias;
+
+  // A copy of the built raster's box [x0, x1) x [y0, y1) (supersampled pixels, whole
+  // blocks), with the placement that draws into it as into the whole.
+  struct Window {
+    int x0, y0;
+    Raster raster;
+    Placement pl;
+  };
+  Window window(int x0, int y0, int x1, int y1) const {
+    Window w{x0, y0, Raster(x1 - x0, y1 - y0), pl};
+    for (int y = y0; y < y1; ++y) {
+      std::copy_n(built.colour.get() + size_t(y) * built.width + x0, x1 - x0,
+                  w.raster.colour.get() + size_t(y - y0) * w.raster.width);
+      std::copy_n(built.depth.get() + size_t(y) * built.width + x0, x1 - x0,
+                  w.raster.depth.get() + size_t(y - y0) * w.raster.width);
+    }
+    w.pl.offsetX -= x0;
+    w.pl.offsetY -= y0;
+    w.pl.width = x1 - x0;
+    w.pl.height = y1 - y0;
+    return w;
+  }
+  // The window downsampled into `out`, the kept edges drawn where they are in front.
+  void downsampleWindow(const Window& w, Picture& out) const {
+    const Raster& r = w.raster;
+    downsampleInto(r.width, r.height, out, w.x0 / kSupersample, w.y0 / kSupersample, [&](int x, int y) {
+      const size_t at = size_t(y) * r.width + x;
+      const double line = lines[size_t(w.y0 + y) * built.width + w.x0 + x];
+      return line > -HUGE_VAL && line >= r.depth[at] ? kEdge : r.colour[at];
+    });
+  }
 };
 
 GrowingAssembly::GrowingAssembly(const std::vector<Panel3>& panels, int widthPixels) {
   checkWidth(widthPixels);
   const Placement pl = place(panels, widthPixels);
   const int thickness = edgeThickness(widthPixels);
+  Picture blank;
+  blank.width = pl.width / kSupersample;
+  blank.height = pl.height / kSupersample;
+  blank.pixels.assign(size_t(blank.width) * blank.height, kWhite);
   state_.reset(new State{panels, pl, Raster(pl.width, pl.height),
-                         std::vector<double>(size_t(pl.width) * pl.height, -HUGE_VAL), thickness,
-                         edgeBias(pl, thickness)});
+                         std::vector<double>(size_t(pl.width) * pl.height, -HUGE_VAL), std::move(blank),
+                         thickness, edgeBias(pl, thickness)});
   state_->built.clear({0, pl.height});
 }
 
 GrowingAssembly::~GrowingAssembly() = default;
 
+// A step changes the picture only inside the new panel's box and its outline's width, so
+// only that box is drawn again: on models of many patches, copying and downsampling the
+// whole raster at every step had been most of the booklet's time.
 Picture GrowingAssembly::add(int panel) {
   State& s = *state_;
-  const Rows all{0, s.built.height};
-  fillPanel(s.built, s.pl, s.panels[panel], Fill::Paper, all);
-  keepEdges(s.lines, s.built, s.pl, s.panels[panel], s.thickness, s.bias);
-  Raster r = s.built;
-  fillPanel(r, s.pl, s.panels[panel], Fill::Highlight, all);
-  for (size_t at = 0; at < s.lines.size(); ++at)
-    if (s.lines[at] > -HUGE_VAL && s.lines[at] >= r.depth[at]) r.colour[at] = kEdge;
-  fillPanel(r, s.pl, s.panels[panel], Fill::XRay, all);
-  return downsample(r);
+  const Panel3& p = s.panels[panel];
+  double left = HUGE_VAL, right = -HUGE_VAL, top = HUGE_VAL, bottom = -HUGE_VAL;
+  for (const auto& loop : p.loops)
+    for (const Vec3& q : loop) {
+      const Vec3 at = s.pl.project(q);
+      left = std::min(left, at.x), right = std::max(right, at.x);
+      top = std::min(top, at.y), bottom = std::max(bottom, at.y);
+    }
+  if (left > right) return s.shown;  // nothing to draw
+  const auto block = [](double v, int limit, bool up) {
+    const int pixel = static_cast<int>(up ? std::ceil(v) : std::floor(v));
+    const int blocks = (up ? pixel + kSupersample - 1 : pixel) / kSupersample;
+    return std::clamp(blocks * kSupersample, 0, limit);
+  };
+  const double reach = s.thickness + 1;  // the outline's stamps spread this far
+  const int x0 = block(std::max(0.0, left - reach), s.pl.width, false);
+  const int x1 = block(right + reach, s.pl.width, true);
+  const int y0 = block(std::max(0.0, top - reach), s.pl.height, false);
+  const int y1 = block(bottom + reach, s.pl.height, true);
+  fillPanel(s.built, s.pl, p, Fill::Paper, {0, s.built.height});
+  keepEdges(s.lines, s.built, s.pl, p, s.thickness, s.bias);
+  if (x0 >= x1 || y0 >= y1) return s.shown;
+  State::Window w = s.window(x0, y0, x1, y1);
+  s.downsampleWindow(w, s.shown);
+  Picture out = s.shown;
+  fillPanel(w.raster, w.pl, p, Fill::Highlight, {0, w.raster.height});
+  // The edges go over the highlight (downsampleWindow), the x-ray over both.
+  for (size_t at = 0; at < size_t(w.raster.width) * w.raster.height; ++at) {
+    const double line = s.lines[size_t(y0 + at / w.raster.width) * s.built.width + x0 + at % w.raster.width];
+    if (line > -HUGE_VAL && line >= w.raster.depth[at]) w.raster.colour[at] = kEdge;
+  }
+  fillPanel(w.raster, w.pl, p, Fill::XRay, {0, w.raster.height});
+  downsampleInto(w.raster.width, w.raster.height, out, x0 / kSupersample, y0 / kSupersample,
+                 [&](int x, int y) { return w.raster.colour[size_t(y) * w.raster.width + x]; });
+  return out;
 }
 
 Picture drawAssembly(const std::vector<Panel3>& panels, int widthPixels) {
@@ -418,12 +509,23 @@ Picture drawAssembly(const std::vector<Panel3>& panels, int widthPixels) {
   const int thickness = edgeThickness(widthPixels);
   // In bands of rows on every core: each band is every panel filled, then every outline,
   // in its own rows, so the picture does not depend on how the bands are shared out.
+  // Nearest panels first: paper behind them then fails the depth test before its colour is
+  // worked out, which was most of the time on models of many patches.
+  std::vector<std::pair<double, const Panel3*>> nearestFirst;
+  for (const Panel3& panel : panels) {
+    double nearest = -HUGE_VAL;
+    for (const auto& loop : panel.loops)
+      for (const Vec3& p : loop) nearest = std::max(nearest, dot(p, pl.view.toViewer));
+    nearestFirst.emplace_back(-nearest, &panel);
+  }
+  std::stable_sort(nearestFirst.begin(), nearestFirst.end(),
+                   [](const auto& a, const auto& b) { return a.first < b.first; });
   const int bands = 16, rows = (pl.height + bands - 1) / bands;
   parallelFor(bands, [&](size_t b) {
     const Rows band{std::min(pl.height, static_cast<int>(b) * rows),
                     std::min(pl.height, (static_cast<int>(b) + 1) * rows)};
     raster.clear(band);
-    for (const Panel3& panel : panels) fillPanel(raster, pl, panel, Fill::Paper, band);
+    for (const auto& [depth, panel] : nearestFirst) fillPanel(raster, pl, *panel, Fill::Paper, band);
     for (const Panel3& panel : panels) drawEdges(raster, pl, panel, thickness, edgeBias(pl, thickness), band);
   });
   return downsample(raster);

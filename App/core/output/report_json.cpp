@@ -119,6 +119,8 @@ json reportJson(const Model& model, const DesignParams& params, const Design& d)
     const PatchFace& face = d.patches[k];
     const FlatPatch& flat = d.layout.patches[k];
     const Placement& at = d.layout.packing.placements[k];
+    json missingFor = json::array();
+    for (const UnlabelledSlot& slot : flat.unlabelled) missingFor.push_back(slot.partner);
     patches.push_back(
         {{"id", patchId(a.scaffold, k)},
          {"family", familyName(sp.family)},
@@ -138,7 +140,7 @@ json reportJson(const Model& model, const DesignParams& params, const Design& d)
          {"step_label", label(flat.stepLabel)},
          {"partner_labels", flat.partners.size()},
          {"partner_labels_missing", flat.unlabelled.size()},
-         {"partner_labels_missing_for", flat.unlabelled},
+         {"partner_labels_missing_for", missingFor},
          {"partner_labels_on_leaders", flat.partnersOnLeaders}});
   }
   doc["patches"] = patches;
