@@ -238,7 +238,7 @@ void fillPanel(Raster& r, const Placement& pl, const Panel3& panel, Fill mode, R
     }
   std::sort(crossings.begin(), crossings.end());
   // A paper pixel's colour is linear in its depth: channel = base + slope * (nearest - z),
-  // the tone and fade of the first measurement folded into two numbers a channel.
+  // the panel's tone and the depth cue's fade folded into two numbers a channel.
   const float tone = shade(n, pl.view);
   const PaperColour paper = paperColour(panel.family);
   const float fadePerDepth = static_cast<float>(kFade / std::max(pl.nearest - pl.farthest, 1e-9));
@@ -275,8 +275,9 @@ void fillPanel(Raster& r, const Placement& pl, const Panel3& panel, Fill mode, R
         colour[col] = kHighlight;
         continue;
       }
-      const float fade = static_cast<float>(pl.nearest - z);
-      colour[col] = packed(base[0] + slope[0] * fade, base[1] + slope[1] * fade, base[2] + slope[2] * fade);
+      const float behind = static_cast<float>(pl.nearest - z);
+      colour[col] =
+          packed(base[0] + slope[0] * behind, base[1] + slope[1] * behind, base[2] + slope[2] * behind);
     }
   }
 }
