@@ -114,6 +114,7 @@ std::vector<std::pair<int, int>> partitionPatches(const std::vector<Region2d>& p
 std::vector<Cylinder> approximateCylinders(const ReebGraph& graph, Family family, double ds, double tauA,
                                            int minRun) {
   std::vector<Cylinder> out;
+  std::vector<std::pair<int, int>> runs;  // of each cylinder, in its edge's patches
   for (size_t e = 0; e < graph.edges.size(); ++e) {
     const ReebEdge& edge = graph.edges[e];
     for (const auto& [i, j] : partitionPatches(edge.patches, ds, tauA, minRun)) {
@@ -122,11 +123,22 @@ std::vector<Cylinder> approximateCylinders(const ReebGraph& graph, Family family
       c.reebEdge = static_cast<int>(e);
       c.firstSlice = edge.firstSlice + i;
       c.lastSlice = edge.firstSlice + j;
-      c.section = Region2d::uniteAll({edge.patches.begin() + i, edge.patches.begin() + j + 1});
-      c.error = cylinderError(edge.patches, i, j, ds);
       out.push_back(std::move(c));
+      runs.emplace_back(i, j);
     }
   }
+  // The sections, on every core: each is the union of its run's exact patches, and its error
+  // (cylinderError) is measured against that very union, not a second one made the same way.
+  parallelFor(out.size(), [&](size_t k) {
+    Cylinder& c = out[k];
+    const std::vector<Region2d>& patches = graph.edges[c.reebEdge].patches;
+    const auto [i, j] = runs[k];
+    c.section = Region2d::uniteAll({patches.begin() + i, patches.begin() + j + 1});
+    const double unionArea = c.section.area();
+    double sum = 0;
+    for (int m = i; m <= j; ++m) sum += unionArea - patches[m].area();
+    c.error = ds * sum;
+  });
   return out;
 }
 
