@@ -27,6 +27,9 @@ constexpr int kPictureWidth = 280;  // pixels of a step picture: 80 mm at about 
 // is about a fifth larger than with cairo's deflated pictures (ChineseDragon 2.7 against
 // 2.2 MB) and takes half the time.
 constexpr int kJpegQuality = 85;
+// A step's cell below its text: the assembly picture takes this share of the width, the
+// patch the rest; the patch is turned a quarter more when that draws it this much larger.
+constexpr double kPictureShare = 0.62, kTurnGain = 1.3;
 
 using Surface = std::unique_ptr<cairo_surface_t, decltype(&cairo_surface_destroy)>;
 
@@ -139,25 +142,43 @@ void drawMarks(cairo_t* cr, const std::vector<std::pair<std::string, Vec2>>& mar
   }
 }
 
-// The step's patch as it lies on its sheet (turned as placed there), fitted into w x h mm at
-// (x, y): its outline and slots in grey, and at each slot that goes onto a partner in this
-// step a dot in the highlight colour with that partner's id, where its partner label is
-// engraved (or on the slot, where it has none): whoever assembles matches the picture's
-// slots with the paper in hand.
-void drawFlatPatch(cairo_t* cr, const FlatPatch& flat, const Placement& placed,
-                   const std::vector<std::string>& onto, double x, double y, double w, double h) {
-  const Placement turn{0, {0, 0}, placed.rotation};
-  const SheetDrawing drawing = placedDrawing(flat, turn);
+// The step's patch turned by `rotationDegrees` (as placed on its sheet, or a quarter more),
+// and its bounds, mm.
+struct FlatView {
+  SheetDrawing drawing;
+  Placement turn;
   Box2 box;
-  for (const CutLoop& loop : drawing.cut)
+  // The scale that fits it into w x h mm.
+  double scaleIn(double w, double h) const {
+    return std::min(w / (box.max.x - box.min.x + 1e-9), h / (box.max.y - box.min.y + 1e-9));
+  }
+};
+
+FlatView flatView(const FlatPatch& flat, double rotationDegrees) {
+  FlatView v{{}, Placement{0, {0, 0}, rotationDegrees}, {}};
+  v.drawing = placedDrawing(flat, v.turn);
+  Box2& box = v.box;
+  for (const CutLoop& loop : v.drawing.cut)
     for (const CutElement& e : loop)
       for (const Vec2& q : sample(e, 0.5)) {
         box.min = box.empty ? q : Vec2{std::min(box.min.x, q.x), std::min(box.min.y, q.y)};
         box.max = box.empty ? q : Vec2{std::max(box.max.x, q.x), std::max(box.max.y, q.y)};
         box.empty = false;
       }
+  return v;
+}
+
+// The patch fitted into w x h mm at (x, y): its outline and slots in grey, and at each slot
+// that goes onto a partner in this step a dot in the highlight colour with that partner's
+// id, where its partner label is engraved (or on the slot, where it has none): whoever
+// assembles matches the picture's slots with the paper in hand.
+void drawFlatPatch(cairo_t* cr, const FlatPatch& flat, const FlatView& view,
+                   const std::vector<std::string>& onto, double x, double y, double w, double h) {
+  const SheetDrawing& drawing = view.drawing;
+  const Placement& turn = view.turn;
+  const Box2& box = view.box;
   if (box.empty || w <= 0 || h <= 0) return;
-  const double scale = std::min(w / (box.max.x - box.min.x + 1e-9), h / (box.max.y - box.min.y + 1e-9));
+  const double scale = view.scaleIn(w, h);
   // Sheet millimetres (y up) to the page (y down), centred in the box.
   const double left = x + (w - (box.max.x - box.min.x) * scale) / 2;
   const auto page = [&](Vec2 q) {
@@ -329,15 +350,22 @@ void writeInstructionsPdf(const Design& d, const std::vector<Panel3>& panels, co
         line = text(cr, how, x, line, 3, cellW - 4);
         // The assembly so far on the left, the patch with the slots to engage on the right.
         const int p = step.patch >= 0 ? panelOf[step.patch] : -1;
-        const double pictureW = 0.62 * (cellW - 4), height = y + cellH - line - 3;
+        const double pictureW = kPictureShare * (cellW - 4), height = y + cellH - line - 3;
         if (p >= 0) drawPicture(cr, pictures.add(p), x, line, pictureW, height);
         const int k = flatIndex[step.patch];
         if (k >= 0) {
           std::vector<std::string> onto = step.fromTop;
           onto.insert(onto.end(), step.fromBottom.begin(), step.fromBottom.end());
           onto.insert(onto.end(), step.through.begin(), step.through.end());
-          drawFlatPatch(cr, d.layout.patches[k], d.layout.packing.placements[k], onto, x + pictureW + 2,
-                        line + 2, cellW - 6 - pictureW, height - 4);
+          // As placed on its sheet; a quarter turn more where that draws it kTurnGain times
+          // larger: the strip beside the picture is tall and narrow, and a long flat patch
+          // came out 30 mm wide with its slot marks run together (ChineseDragon, step 47).
+          const double w = cellW - 6 - pictureW, h = height - 4;
+          const Placement& placed = d.layout.packing.placements[k];
+          FlatView view = flatView(d.layout.patches[k], placed.rotation);
+          FlatView turned = flatView(d.layout.patches[k], placed.rotation + 90);
+          if (turned.scaleIn(w, h) > kTurnGain * view.scaleIn(w, h)) view = std::move(turned);
+          drawFlatPatch(cr, d.layout.patches[k], view, onto, x + pictureW + 2, line + 2, w, h);
         }
         if (slot == kStepsPerPage - 1 || i + 1 == steps.size()) cairo_show_page(cr);
       }
