@@ -258,6 +258,9 @@ void runDesign(DesignOptions o) {
         "directions the file's axes give no buildable design (%s); trying others (--directions auto)\n",
         refusal.c_str());
     std::fflush(stdout);
+    // A no-op today (the file's axes begin nothing when other frames follow): a STEP file
+    // begun for them must never stand for another frame's design (start() keeps the first).
+    if (writer) writer->discard();
     DirectionChoice other;
     std::optional<Design> turned;
     try {

@@ -53,8 +53,9 @@ struct Label {
   Stroke leader;                // from the slot to the box, where the label stands off; or empty
 };
 
-// A slot left without a partner label: the partner's id, and the middle of the slot's
-// stretch of its hinge line, where the booklet marks it.
+// A slot left without a partner label: the partner's id, and where the booklet marks it on
+// the hinge line: the middle of the slot's stretch, or the root for a slot cut through (and
+// for a hinge this patch leaves uncut, where the partner's slot goes through).
 struct UnlabelledSlot {
   std::string partner;
   Vec2 at;

@@ -38,7 +38,9 @@ constexpr uint32_t kWhite = 0xFFFFFF;
 // 0x00RRGGBB from channels in [0, 1].
 uint32_t packed(float r, float g, float b) {
   // Rounded half up (not std::lround, a library call per channel and pixel).
-  const auto c = [](float v) { return static_cast<uint32_t>(std::clamp(v, 0.0f, 1.0f) * 255 + 0.5f); };
+  const auto c = [](float v) {
+    return v == v ? static_cast<uint32_t>(std::clamp(v, 0.0f, 1.0f) * 255 + 0.5f) : 0u;
+  };
   return c(r) << 16 | c(g) << 8 | c(b);
 }
 
@@ -167,6 +169,7 @@ struct RasterMemory {
 // on their own cores.
 struct Raster {
   int width, height;
+  int x0 = 0, y0 = 0;  // where its top left lies in the whole picture's raster (a window's)
   std::unique_ptr<uint32_t[], RasterMemory<uint32_t>::Free> colour;
   std::unique_ptr<float[], RasterMemory<float>::Free> depth;
   Raster(int w, int h)
@@ -175,9 +178,11 @@ struct Raster {
         colour(RasterMemory<uint32_t>::make(size_t(w) * h)),
         depth(RasterMemory<float>::make(size_t(w) * h)) {}
   Raster(const Raster& o) : Raster(o.width, o.height) {
+    x0 = o.x0, y0 = o.y0;
     std::copy_n(o.colour.get(), size_t(width) * height, colour.get());
     std::copy_n(o.depth.get(), size_t(width) * height, depth.get());
   }
+  Raster(Raster&&) = default;
   void clear(Rows band) {
     const size_t from = size_t(band.lo) * width, to = size_t(band.hi) * width;
     std::fill(colour.get() + from, colour.get() + to, kWhite);
@@ -252,31 +257,30 @@ void fillPanel(Raster& r, const Placement& pl, const Panel3& panel, Fill mode, R
   for (size_t i = 0; i + 1 < crossings.size(); i += 2) {
     // Even-odd: a closed loop crosses each row an even number of times; should rounding
     // ever leave a row odd, its last crossing is dropped rather than paired with the next row.
-    if (crossings[i].first != crossings[i + 1].first) {
-      --i;
-      continue;
-    }
+    while (i + 1 < crossings.size() && crossings[i].first != crossings[i + 1].first) ++i;
+    if (i + 1 >= crossings.size()) break;
     const int row = crossings[i].first;
-    const int col0 = std::max(0, static_cast<int>(std::ceil(crossings[i].second - 0.5)));
-    const int col1 = std::min(r.width, static_cast<int>(std::ceil(crossings[i + 1].second - 0.5)));
+    const int col0 = std::max(r.x0, static_cast<int>(std::ceil(crossings[i].second - 0.5)));
+    const int col1 = std::min(r.x0 + r.width, static_cast<int>(std::ceil(crossings[i + 1].second - 0.5)));
     const double z0 = depthAt(col0 + 0.5, row + 0.5);
-    uint32_t* colour = r.colour.get() + size_t(row) * r.width;
-    float* depth = r.depth.get() + size_t(row) * r.width;
-    for (int col = col0; col < col1; ++col) {
+    // Rows and columns are the whole picture's; a window's memory starts at its origin.
+    uint32_t* colour = r.colour.get() + size_t(row - r.y0) * r.width;
+    float* depth = r.depth.get() + size_t(row - r.y0) * r.width;
+    for (int col = col0, at = col0 - r.x0; col < col1; ++col, ++at) {
       const double z = z0 + (col - col0) * step;
       if (mode == Fill::XRay) {
-        if (z < depth[col] - 1e-3) colour[col] = halfway(colour[col], kHighlight);
+        if (z < depth[at] - 1e-3) colour[at] = halfway(colour[at], kHighlight);
         continue;
       }
       // The highlight is filled again over itself: its own depth lets it through.
-      if (mode == Fill::Highlight ? z < depth[col] - 1e-6 : z <= depth[col]) continue;
-      depth[col] = static_cast<float>(z);
+      if (mode == Fill::Highlight ? z < depth[at] - 1e-6 : z <= depth[at]) continue;
+      depth[at] = static_cast<float>(z);
       if (mode == Fill::Highlight) {  // flat: every pixel of it is the colour a reader looks for
-        colour[col] = kHighlight;
+        colour[at] = kHighlight;
         continue;
       }
       const float behind = static_cast<float>(pl.nearest - z);
-      colour[col] =
+      colour[at] =
           packed(base[0] + slope[0] * behind, base[1] + slope[1] * behind, base[2] + slope[2] * behind);
     }
   }
@@ -414,33 +418,28 @@ struct GrowingAssembly::State {
   double bias;
 
   // A copy of the built raster's box [x0, x1) x [y0, y1) (supersampled pixels, whole
-  // blocks), with the placement that draws into it as into the whole.
-  struct Window {
-    int x0, y0;
-    Raster raster;
-    Placement pl;
-  };
-  Window window(int x0, int y0, int x1, int y1) const {
-    Window w{x0, y0, Raster(x1 - x0, y1 - y0), pl};
+  // blocks); fillPanel draws into it with the whole picture's placement.
+  Raster window(int x0, int y0, int x1, int y1) const {
+    Raster w(x1 - x0, y1 - y0);
+    w.x0 = x0, w.y0 = y0;
     for (int y = y0; y < y1; ++y) {
       std::copy_n(built.colour.get() + size_t(y) * built.width + x0, x1 - x0,
-                  w.raster.colour.get() + size_t(y - y0) * w.raster.width);
+                  w.colour.get() + size_t(y - y0) * w.width);
       std::copy_n(built.depth.get() + size_t(y) * built.width + x0, x1 - x0,
-                  w.raster.depth.get() + size_t(y - y0) * w.raster.width);
+                  w.depth.get() + size_t(y - y0) * w.width);
     }
-    w.pl.offsetX -= x0;
-    w.pl.offsetY -= y0;
-    w.pl.width = x1 - x0;
-    w.pl.height = y1 - y0;
     return w;
   }
+  // The kept edge depth at pixel (x, y) of window w, -inf where none.
+  double lineAt(const Raster& w, int x, int y) const {
+    return lines[size_t(w.y0 + y) * built.width + w.x0 + x];
+  }
   // The window downsampled into `out`, the kept edges drawn where they are in front.
-  void downsampleWindow(const Window& w, Picture& out) const {
-    const Raster& r = w.raster;
-    downsampleInto(r.width, r.height, out, w.x0 / kSupersample, w.y0 / kSupersample, [&](int x, int y) {
-      const size_t at = size_t(y) * r.width + x;
-      const double line = lines[size_t(w.y0 + y) * built.width + w.x0 + x];
-      return line > -HUGE_VAL && line >= r.depth[at] ? kEdge : r.colour[at];
+  void downsampleWindow(const Raster& w, Picture& out) const {
+    downsampleInto(w.width, w.height, out, w.x0 / kSupersample, w.y0 / kSupersample, [&](int x, int y) {
+      const size_t at = size_t(y) * w.width + x;
+      const double line = lineAt(w, x, y);
+      return line > -HUGE_VAL && line >= w.depth[at] ? kEdge : w.colour[at];
     });
   }
 };
@@ -488,18 +487,20 @@ Picture GrowingAssembly::add(int panel) {
   fillPanel(s.built, s.pl, p, Fill::Paper, {0, s.built.height});
   keepEdges(s.lines, s.built, s.pl, p, s.thickness, s.bias);
   if (x0 >= x1 || y0 >= y1) return s.shown;
-  State::Window w = s.window(x0, y0, x1, y1);
+  Raster w = s.window(x0, y0, x1, y1);
   s.downsampleWindow(w, s.shown);
   Picture out = s.shown;
-  fillPanel(w.raster, w.pl, p, Fill::Highlight, {0, w.raster.height});
+  fillPanel(w, s.pl, p, Fill::Highlight, {y0, y1});
   // The edges go over the highlight (downsampleWindow), the x-ray over both.
-  for (size_t at = 0; at < size_t(w.raster.width) * w.raster.height; ++at) {
-    const double line = s.lines[size_t(y0 + at / w.raster.width) * s.built.width + x0 + at % w.raster.width];
-    if (line > -HUGE_VAL && line >= w.raster.depth[at]) w.raster.colour[at] = kEdge;
-  }
-  fillPanel(w.raster, w.pl, p, Fill::XRay, {0, w.raster.height});
-  downsampleInto(w.raster.width, w.raster.height, out, x0 / kSupersample, y0 / kSupersample,
-                 [&](int x, int y) { return w.raster.colour[size_t(y) * w.raster.width + x]; });
+  for (int y = 0; y < w.height; ++y)
+    for (int x = 0; x < w.width; ++x) {
+      const size_t at = size_t(y) * w.width + x;
+      const double line = s.lineAt(w, x, y);
+      if (line > -HUGE_VAL && line >= w.depth[at]) w.colour[at] = kEdge;
+    }
+  fillPanel(w, s.pl, p, Fill::XRay, {y0, y1});
+  downsampleInto(w.width, w.height, out, x0 / kSupersample, y0 / kSupersample,
+                 [&](int x, int y) { return w.colour[size_t(y) * w.width + x]; });
   return out;
 }
 

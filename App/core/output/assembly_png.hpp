@@ -44,8 +44,9 @@ Picture drawAssembly(const std::vector<Panel3>& panels, int widthPixels = 1200);
 // Pictures of a growing assembly, at the place and scale the whole one has, so they line
 // up: add(k) adds panel k (an index into `panels`) to those shown and draws them with it
 // in the highlight colour (kHighlight), x-rayed where other paper hides it. Each panel is
-// filled once into a kept depth buffer; a picture costs a copy, the new panel again, and
-// the edges. The assembly instructions' step pictures.
+// filled once into a kept depth buffer, and the picture before the step is kept: a step
+// draws again only the new panel's box (a copy of it, the panel highlighted, the edges).
+// The assembly instructions' step pictures.
 class GrowingAssembly {
  public:
   GrowingAssembly(const std::vector<Panel3>& panels, int widthPixels);

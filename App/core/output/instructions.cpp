@@ -280,7 +280,8 @@ void cover(cairo_t* cr, const Design& d, const Picture& whole, const std::string
       "step. Then follow the steps: each adds one patch, orange "
       "in its picture. Its slots open at the top or at the bottom; slide it on so each slot meets the named "
       "partner's slot, until the slots' ends touch. Check the ids at each slot (the partner's id is engraved "
-      "beside it) before you push.",
+      "beside it; where the sheet had no room, the step's drawing marks the slot: write the id there) "
+      "before you push.",
       kMargin, y, 3.5, width);
 }
 
