@@ -430,16 +430,16 @@ struct GrowingAssembly::State {
     }
     return w;
   }
-  // The kept edge depth at pixel (x, y) of window w, -inf where none.
-  double lineAt(const Raster& w, int x, int y) const {
-    return lines[size_t(w.y0 + y) * built.width + w.x0 + x];
+  // Whether a kept edge shows at pixel (x, y) of window w: one lies there, at least as
+  // near as the paper.
+  bool edgeShows(const Raster& w, int x, int y) const {
+    const double line = lines[size_t(w.y0 + y) * built.width + w.x0 + x];
+    return line > -HUGE_VAL && line >= w.depth[size_t(y) * w.width + x];
   }
-  // The window downsampled into `out`, the kept edges drawn where they are in front.
+  // The window downsampled into `out`, the kept edges drawn where they show.
   void downsampleWindow(const Raster& w, Picture& out) const {
     downsampleInto(w.width, w.height, out, w.x0 / kSupersample, w.y0 / kSupersample, [&](int x, int y) {
-      const size_t at = size_t(y) * w.width + x;
-      const double line = lineAt(w, x, y);
-      return line > -HUGE_VAL && line >= w.depth[at] ? kEdge : w.colour[at];
+      return edgeShows(w, x, y) ? kEdge : w.colour[size_t(y) * w.width + x];
     });
   }
 };
@@ -493,11 +493,8 @@ Picture GrowingAssembly::add(int panel) {
   fillPanel(w, s.pl, p, Fill::Highlight, {y0, y1});
   // The edges go over the highlight (downsampleWindow), the x-ray over both.
   for (int y = 0; y < w.height; ++y)
-    for (int x = 0; x < w.width; ++x) {
-      const size_t at = size_t(y) * w.width + x;
-      const double line = s.lineAt(w, x, y);
-      if (line > -HUGE_VAL && line >= w.depth[at]) w.colour[at] = kEdge;
-    }
+    for (int x = 0; x < w.width; ++x)
+      if (s.edgeShows(w, x, y)) w.colour[size_t(y) * w.width + x] = kEdge;
   fillPanel(w, s.pl, p, Fill::XRay, {y0, y1});
   downsampleInto(w.width, w.height, out, x0 / kSupersample, y0 / kSupersample,
                  [&](int x, int y) { return w.colour[size_t(y) * w.width + x]; });

@@ -148,9 +148,11 @@ struct FlatView {
   SheetDrawing drawing;
   Placement turn;
   Box2 box;
-  // The scale that fits it into w x h mm.
-  double scaleIn(double w, double h) const {
-    return std::min(w / (box.max.x - box.min.x + 1e-9), h / (box.max.y - box.min.y + 1e-9));
+  // The scale that fits it into w x h mm; turned a quarter more, its box is the same with
+  // width and height swapped.
+  double scaleIn(double w, double h, bool quarterMore = false) const {
+    const double bw = box.max.x - box.min.x + 1e-9, bh = box.max.y - box.min.y + 1e-9;
+    return quarterMore ? std::min(w / bh, h / bw) : std::min(w / bw, h / bh);
   }
 };
 
@@ -364,8 +366,8 @@ void writeInstructionsPdf(const Design& d, const std::vector<Panel3>& panels, co
           const double w = cellW - 6 - pictureW, h = height - 4;
           const Placement& placed = d.layout.packing.placements[k];
           FlatView view = flatView(d.layout.patches[k], placed.rotation);
-          FlatView turned = flatView(d.layout.patches[k], placed.rotation + 90);
-          if (turned.scaleIn(w, h) > kTurnGain * view.scaleIn(w, h)) view = std::move(turned);
+          if (view.scaleIn(w, h, true) > kTurnGain * view.scaleIn(w, h))
+            view = flatView(d.layout.patches[k], placed.rotation + 90);
           drawFlatPatch(cr, d.layout.patches[k], view, onto, x + pictureW + 2, line + 2, w, h);
         }
         if (slot == kStepsPerPage - 1 || i + 1 == steps.size()) cairo_show_page(cr);
