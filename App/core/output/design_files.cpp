@@ -15,6 +15,7 @@
 #include "output/sheet_dxf.hpp"
 #include "output/sheets_cairo.hpp"
 #include "support/error.hpp"
+#include "support/free_memory.hpp"
 #include "support/parallel.hpp"
 
 namespace sliceform {
@@ -54,6 +55,9 @@ void DesignFilesWriter::discard() {
 
 void DesignFilesWriter::start(const Design& d) {
   if (step_.valid()) return;
+  // The design's transient memory (the slot search's caches) is freed by now: back to the
+  // system before the STEP writer and the other files ask for theirs (support/free_memory).
+  releaseFreeMemory();
   // Posed here, synchronously: the thread then holds its own handles to the faces and
   // nothing of `d`, which the caller goes on to change and move. The BREP file reuses it.
   assembly_ = assemble(d.arrangement, d.patches, foldAngle_);
