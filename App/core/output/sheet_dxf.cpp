@@ -4,7 +4,9 @@
 #include <dl_dxf.h>
 
 #include <algorithm>
+#include <charconv>
 #include <cmath>
+#include <cstring>
 #include <fstream>
 #include <memory>
 #include <string>
@@ -23,6 +25,59 @@ constexpr int kMetric = 1;                      // $MEASUREMENT
 
 // Entities carry their layer's colour as well (not BYLAYER): some laser software tells cut
 // from engrave by the entity's own colour and ignores layers.
+// dxflib's own writer formats every number with sprintf("%.16f") and flushes the file after
+// each one: ChineseDragon's 11 sheets took 353 ms of thread time, 5 % of the run's CPU, most
+// of it in write calls. This one writes the very same text (std::to_chars gives printf's
+// digits, in any locale) into memory, and the file at once in finish(). Its base opens the
+// file, as dxflib's writer does, and is left empty: every write goes through these.
+class BufferedWriter final : public DL_WriterA {
+ public:
+  BufferedWriter(const char* file, DL_Codes::version version) : DL_WriterA(file, version) {}
+
+  void dxfReal(int gc, double value) const override {
+    char text[512];
+    // Room for any double: 309 digits, the point, 16 decimals and a sign.
+    char* end = std::to_chars(text, text + sizeof text - 1, value, std::chars_format::fixed, 16).ptr;
+    *end = '\0';
+    // As dxflib does: trailing zeros cut, one digit after the point kept.
+    const char* dot = std::strchr(text, '.');
+    if (dot) {
+      char* keep = text + (dot - text) + 2;
+      for (char* c = keep; c < end; ++c)
+        if (*c != '0') keep = c + 1;
+      if (keep < end) *keep = '\0';
+    }
+    put(gc, text);
+  }
+  void dxfInt(int gc, int value) const override { put(gc, std::to_string(value).c_str()); }
+  void dxfHex(int gc, int value) const override {
+    char text[12];
+    std::snprintf(text, sizeof text, "%0X", value);
+    put(gc, text);
+  }
+  void dxfString(int gc, const char* value) const override { put(gc, value); }
+  void dxfString(int gc, const std::string& value) const override { put(gc, value.c_str()); }
+
+  // Writes the text to `file`; false when that fails.
+  bool finish(const std::string& file) const {
+    close();
+    std::ofstream out(file, std::ios::binary | std::ios::trunc);
+    out.write(text_.data(), static_cast<std::streamsize>(text_.size()));
+    out.close();
+    return static_cast<bool>(out);
+  }
+
+ private:
+  void put(int gc, const char* value) const {
+    text_ += gc < 10 ? "  " : gc < 100 ? " " : "";
+    text_ += std::to_string(gc);
+    text_ += '\n';
+    text_ += value;
+    text_ += '\n';
+  }
+  mutable std::string text_;
+};
+
 DL_Attributes onLayer(const char* layer, int colour) {
   return DL_Attributes(layer, colour, -1, "BYLAYER", 1.0);
 }
@@ -159,17 +214,19 @@ bool writtenWhole(const std::string& file) {
 void writeFile(const SheetDrawing& drawing, const SheetSpec& sheet, const std::string& file,
                const std::string& path) {
   DL_Dxf dxf;
-  std::unique_ptr<DL_WriterA> dw(dxf.out(file.c_str(), DL_Codes::AC1015));
-  if (!dw) throw Error(ErrorKind::Io, "cannot write " + path);
-  writeHeader(*dw, drawing, sheet);
-  writeTables(dxf, *dw);
-  writeBlocks(dxf, *dw);
-  writeEntities(dxf, *dw, drawing);
-  dxf.writeObjects(*dw);
-  dxf.writeObjectsEnd(*dw);
-  dw->dxfEOF();
-  dw->close();
-  if (!writtenWhole(file)) throw Error(ErrorKind::Io, "cannot write " + path);
+  // out() sets the version the entity writers follow (it has no setter) and opens the file.
+  if (!std::unique_ptr<DL_WriterA>(dxf.out(file.c_str(), DL_Codes::AC1015)))
+    throw Error(ErrorKind::Io, "cannot write " + path);
+  BufferedWriter dw(file.c_str(), DL_Codes::AC1015);
+  if (dw.openFailed()) throw Error(ErrorKind::Io, "cannot write " + path);
+  writeHeader(dw, drawing, sheet);
+  writeTables(dxf, dw);
+  writeBlocks(dxf, dw);
+  writeEntities(dxf, dw, drawing);
+  dxf.writeObjects(dw);
+  dxf.writeObjectsEnd(dw);
+  dw.dxfEOF();
+  if (!dw.finish(file) || !writtenWhole(file)) throw Error(ErrorKind::Io, "cannot write " + path);
 }
 
 }  // namespace
