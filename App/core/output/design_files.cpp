@@ -111,6 +111,7 @@ DesignFiles DesignFilesWriter::finish(const Model& model, const DesignParams& pa
       {"export sheets PNG, in parallel",
        [&, png = path("sheets.png")] { writeSheetsPng(sheets, d.layout.sheet, png); }},
       {"export glTF, in parallel", [&, to = path("assembly.glb")] { writeGltf(panels, to); }},
+      {"export assembly PNG, in parallel", [&, to = path("assembly.png")] { writePicturePng(picture, to); }},
       {"export BREP, in parallel", [&, to = path("assembly.brep")] { writeShape(assembly_, to); }},
       {"export report, in parallel",
        [&, to = path("report.json")] { writeJson(reportJson(model, params, d), to); }},
@@ -139,7 +140,6 @@ DesignFiles DesignFilesWriter::finish(const Model& model, const DesignParams& pa
         throw Error(ErrorKind::Io, "cannot remove the stale " + stale.string() + ": " + failed.message());
       files.removed.push_back(stale.filename().string());
     }
-  writePicturePng(picture, path("assembly.png"));
   clock.lap("export files");
   // Each file's own time, summed per kind (the DXF sheets together).
   std::vector<StageTime> own;
