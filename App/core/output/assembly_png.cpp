@@ -140,6 +140,28 @@ struct Rows {
   int lo, hi;
 };
 
+// A panel as the picture sees it: its loops in pixel coordinates (Placement::project) and
+// the rows they span. Projected once a panel: each band of drawAssembly, and each fill of a
+// booklet step, had projected every point again (16 bands: 48 projections a point).
+struct Projected {
+  std::vector<std::vector<Vec3>> loops;
+  double top = HUGE_VAL, bottom = -HUGE_VAL;
+};
+
+Projected projected(const Placement& pl, const Panel3& panel) {
+  Projected out;
+  for (const auto& loop : panel.loops) {
+    out.loops.emplace_back();
+    out.loops.back().reserve(loop.size());
+    for (const Vec3& p : loop) {
+      out.loops.back().push_back(pl.project(p));
+      out.top = std::min(out.top, out.loops.back().back().y);
+      out.bottom = std::max(out.bottom, out.loops.back().back().y);
+    }
+  }
+  return out;
+}
+
 // Memory for `n` values of a raster, unset. On Linux in transparent huge pages where the
 // system gives them on request (Debian's and Ubuntu's default): the first touch of each
 // 4 KB page faults, and on the CI machine touching 58 MB so took 250 ms, with 2 MB pages
@@ -203,7 +225,8 @@ float shade(const Vec3& normal, const View& view) {
 // goes inside the assembly.
 enum class Fill { Paper, Highlight, XRay };
 
-void fillPanel(Raster& r, const Placement& pl, const Panel3& panel, Fill mode, Rows band) {
+void fillPanel(Raster& r, const Placement& pl, const Panel3& panel, const Projected& at, Fill mode,
+               Rows band) {
   const Vec3 n = normalized(panel.normal);
   const double facing = dot(n, pl.view.toViewer);
   if (std::fabs(facing) < 1e-6 || panel.loops.empty() || panel.loops[0].empty()) return;  // edge-on
@@ -214,24 +237,14 @@ void fillPanel(Raster& r, const Placement& pl, const Panel3& panel, Fill mode, R
     const double sx = pl.x0 + (px - pl.offsetX) / pl.scale, sy = pl.y1 - (py - pl.offsetY) / pl.scale;
     return (c - nx * sx - ny * sy) / facing;
   };
-  std::vector<std::vector<Vec3>> loops;
-  double top = HUGE_VAL, bottom = -HUGE_VAL;
-  for (const auto& loop : panel.loops) {
-    loops.emplace_back();
-    for (const Vec3& p : loop) {
-      loops.back().push_back(pl.project(p));
-      top = std::min(top, loops.back().back().y);
-      bottom = std::max(bottom, loops.back().back().y);
-    }
-  }
   // Pixel rows whose centre y + 0.5 lies in [top, bottom), in the band.
-  const int row0 = std::max(band.lo, static_cast<int>(std::ceil(top - 0.5)));
-  const int row1 = std::min(band.hi, static_cast<int>(std::ceil(bottom - 0.5)));
+  const int row0 = std::max(band.lo, static_cast<int>(std::ceil(at.top - 0.5)));
+  const int row1 = std::min(band.hi, static_cast<int>(std::ceil(at.bottom - 0.5)));
   if (row0 >= row1) return;
   // Where the outlines cross each row, as (row, x) in one list sorted by row then x: one
   // allocation a panel, not one a row.
   std::vector<std::pair<int, double>> crossings;
-  for (const auto& loop : loops)
+  for (const auto& loop : at.loops)
     for (size_t i = 0; i < loop.size(); ++i) {
       const Vec3& a = loop[i];
       const Vec3& b = loop[(i + 1) % loop.size()];
@@ -288,7 +301,7 @@ void fillPanel(Raster& r, const Placement& pl, const Panel3& panel, Fill mode, R
 
 // Every pixel of a panel's outlines, drawn `thickness` wide, with the line's depth there.
 template <class Fn>
-void forEdgePixels(int width, Rows band, const Placement& pl, const Panel3& panel, int thickness, Fn&& fn) {
+void forEdgePixels(int width, Rows band, const Projected& at, int thickness, Fn&& fn) {
   auto stamp = [&](double x, double y, double z) {
     const int cx = static_cast<int>(std::floor(x - thickness / 2.0 + 0.5));
     const int cy = static_cast<int>(std::floor(y - thickness / 2.0 + 0.5));
@@ -296,9 +309,11 @@ void forEdgePixels(int width, Rows band, const Placement& pl, const Panel3& pane
       for (int col = std::max(0, cx); col < std::min(width, cx + thickness); ++col)
         fn(size_t(row) * width + col, z);
   };
-  for (const auto& loop : panel.loops)
+  if (at.bottom + thickness < band.lo || at.top - thickness > band.hi) return;
+  for (const auto& loop : at.loops)
     for (size_t i = 0; i < loop.size(); ++i) {
-      const Vec3 a = pl.project(loop[i]), b = pl.project(loop[(i + 1) % loop.size()]);
+      const Vec3& a = loop[i];
+      const Vec3& b = loop[(i + 1) % loop.size()];
       if (std::max(a.y, b.y) + thickness < band.lo || std::min(a.y, b.y) - thickness > band.hi) continue;
       const int steps = std::max(1, static_cast<int>(std::ceil(2 * std::hypot(b.x - a.x, b.y - a.y))));
       for (int s = 0; s <= steps; ++s) {
@@ -310,8 +325,8 @@ void forEdgePixels(int width, Rows band, const Placement& pl, const Panel3& pane
 
 // The outlines as dark lines, hidden where other paper is in front: a line passes the depth
 // test with a small bias, so it shows on its own panel.
-void drawEdges(Raster& r, const Placement& pl, const Panel3& panel, int thickness, double bias, Rows band) {
-  forEdgePixels(r.width, band, pl, panel, thickness, [&](size_t at, double z) {
+void drawEdges(Raster& r, const Projected& panel, int thickness, double bias, Rows band) {
+  forEdgePixels(r.width, band, panel, thickness, [&](size_t at, double z) {
     if (z + bias >= r.depth[at]) r.colour[at] = kEdge;
   });
 }
@@ -319,9 +334,9 @@ void drawEdges(Raster& r, const Placement& pl, const Panel3& panel, int thicknes
 // The same lines kept aside, as the nearest line depth (plus the bias) at each pixel: a
 // pixel shows a line once that is at least the paper's depth there, whatever was filled
 // after. A growing assembly then draws each panel's lines once, not again at every step.
-void keepEdges(std::vector<double>& lines, const Raster& r, const Placement& pl, const Panel3& panel,
-               int thickness, double bias) {
-  forEdgePixels(r.width, {0, r.height}, pl, panel, thickness,
+void keepEdges(std::vector<double>& lines, const Raster& r, const Projected& panel, int thickness,
+               double bias) {
+  forEdgePixels(r.width, {0, r.height}, panel, thickness,
                 [&](size_t at, double z) { lines[at] = std::max(lines[at], z + bias); });
 }
 
@@ -466,13 +481,11 @@ GrowingAssembly::~GrowingAssembly() = default;
 Picture GrowingAssembly::add(int panel) {
   State& s = *state_;
   const Panel3& p = s.panels[panel];
-  double left = HUGE_VAL, right = -HUGE_VAL, top = HUGE_VAL, bottom = -HUGE_VAL;
-  for (const auto& loop : p.loops)
-    for (const Vec3& q : loop) {
-      const Vec3 at = s.pl.project(q);
-      left = std::min(left, at.x), right = std::max(right, at.x);
-      top = std::min(top, at.y), bottom = std::max(bottom, at.y);
-    }
+  const Projected seen = projected(s.pl, p);
+  double left = HUGE_VAL, right = -HUGE_VAL;
+  for (const auto& loop : seen.loops)
+    for (const Vec3& at : loop) left = std::min(left, at.x), right = std::max(right, at.x);
+  const double top = seen.top, bottom = seen.bottom;
   if (left > right) return s.shown;  // nothing to draw
   const auto block = [](double v, int limit, bool up) {
     const int pixel = static_cast<int>(up ? std::ceil(v) : std::floor(v));
@@ -484,18 +497,18 @@ Picture GrowingAssembly::add(int panel) {
   const int x1 = block(right + reach, s.pl.width, true);
   const int y0 = block(std::max(0.0, top - reach), s.pl.height, false);
   const int y1 = block(bottom + reach, s.pl.height, true);
-  fillPanel(s.built, s.pl, p, Fill::Paper, {0, s.built.height});
-  keepEdges(s.lines, s.built, s.pl, p, s.thickness, s.bias);
+  fillPanel(s.built, s.pl, p, seen, Fill::Paper, {0, s.built.height});
+  keepEdges(s.lines, s.built, seen, s.thickness, s.bias);
   if (x0 >= x1 || y0 >= y1) return s.shown;
   Raster w = s.window(x0, y0, x1, y1);
   s.downsampleWindow(w, s.shown);
   Picture out = s.shown;
-  fillPanel(w, s.pl, p, Fill::Highlight, {y0, y1});
+  fillPanel(w, s.pl, p, seen, Fill::Highlight, {y0, y1});
   // The edges go over the highlight (downsampleWindow), the x-ray over both.
   for (int y = 0; y < w.height; ++y)
     for (int x = 0; x < w.width; ++x)
       if (s.edgeShows(w, x, y)) w.colour[size_t(y) * w.width + x] = kEdge;
-  fillPanel(w, s.pl, p, Fill::XRay, {y0, y1});
+  fillPanel(w, s.pl, p, seen, Fill::XRay, {y0, y1});
   downsampleInto(w.width, w.height, out, x0 / kSupersample, y0 / kSupersample,
                  [&](int x, int y) { return w.colour[size_t(y) * w.width + x]; });
   return out;
@@ -510,12 +523,14 @@ Picture drawAssembly(const std::vector<Panel3>& panels, int widthPixels) {
   // in its own rows, so the picture does not depend on how the bands are shared out.
   // Nearest panels first: paper behind them then fails the depth test before its colour is
   // worked out, which was most of the time on models of many patches.
-  std::vector<std::pair<double, const Panel3*>> nearestFirst;
-  for (const Panel3& panel : panels) {
+  std::vector<Projected> seen(panels.size());
+  parallelFor(panels.size(), [&](size_t k) { seen[k] = projected(pl, panels[k]); });
+  std::vector<std::pair<double, size_t>> nearestFirst;
+  for (size_t k = 0; k < panels.size(); ++k) {
     double nearest = -HUGE_VAL;
-    for (const auto& loop : panel.loops)
+    for (const auto& loop : panels[k].loops)
       for (const Vec3& p : loop) nearest = std::max(nearest, dot(p, pl.view.toViewer));
-    nearestFirst.emplace_back(-nearest, &panel);
+    nearestFirst.emplace_back(-nearest, k);
   }
   std::stable_sort(nearestFirst.begin(), nearestFirst.end(),
                    [](const auto& a, const auto& b) { return a.first < b.first; });
@@ -524,8 +539,8 @@ Picture drawAssembly(const std::vector<Panel3>& panels, int widthPixels) {
     const Rows band{std::min(pl.height, static_cast<int>(b) * rows),
                     std::min(pl.height, (static_cast<int>(b) + 1) * rows)};
     raster.clear(band);
-    for (const auto& [depth, panel] : nearestFirst) fillPanel(raster, pl, *panel, Fill::Paper, band);
-    for (const Panel3& panel : panels) drawEdges(raster, pl, panel, thickness, edgeBias(pl, thickness), band);
+    for (const auto& [depth, k] : nearestFirst) fillPanel(raster, pl, panels[k], seen[k], Fill::Paper, band);
+    for (const Projected& panel : seen) drawEdges(raster, panel, thickness, edgeBias(pl, thickness), band);
   });
   return downsample(raster);
 }
