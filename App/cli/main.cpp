@@ -42,9 +42,9 @@ int exitCode(sliceform::ErrorKind kind) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  // occ/Top.brep's peak, with the memory freed before the STEP file handed back: 274-294 MB
-  // (3 runs) with glibc's arenas, 254-258 MB with one a core; no slower (ChineseDragon,
-  // Pump_TopCover).
+  // Peak memory, occ/Top.brep: 261-330 MB in six runs before, 214-259 MB in four with this
+  // and the trim before the STEP file (DesignFilesWriter::start); no slower (ChineseDragon,
+  // Pump_TopCover). support/free_memory.hpp says why.
   sliceform::oneArenaPerCore();
   CLI::App app{
       "sliceform: turn a solid (STEP, IGES, BREP, STL, OBJ, OFF) into a paper sliceform.\n"

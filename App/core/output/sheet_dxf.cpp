@@ -2,10 +2,12 @@
 #include "output/sheet_dxf.hpp"
 
 #include <dl_dxf.h>
+#include <dl_exception.h>
 
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <fstream>
 #include <memory>
@@ -23,16 +25,16 @@ constexpr int kRed = 1, kBlue = 5, kWhite = 7;  // AutoCAD colour index
 constexpr int kMillimetres = 4;                 // $INSUNITS
 constexpr int kMetric = 1;                      // $MEASUREMENT
 
-// Entities carry their layer's colour as well (not BYLAYER): some laser software tells cut
-// from engrave by the entity's own colour and ignores layers.
 // dxflib's own writer formats every number with sprintf("%.16f") and flushes the file after
 // each one: ChineseDragon's 11 sheets took 353 ms of thread time, 5 % of the run's CPU, most
 // of it in write calls. This one writes the very same text (std::to_chars gives printf's
-// digits, in any locale) into memory, and the file at once in finish(). Its base opens the
-// file, as dxflib's writer does, and is left empty: every write goes through these.
+// digits, in any locale) through a buffer of its own, to the file a megabyte at a time. Its
+// base opens the file too, as dxflib's writer does, and writes nothing: every write of
+// dxflib's goes through these (dxfBool through dxfInt, handles through dxfHex).
 class BufferedWriter final : public DL_WriterA {
  public:
-  BufferedWriter(const char* file, DL_Codes::version version) : DL_WriterA(file, version) {}
+  BufferedWriter(const char* file, DL_Codes::version version)
+      : DL_WriterA(file, version), out_(file, std::ios::binary | std::ios::trunc) {}
 
   void dxfReal(int gc, double value) const override {
     char text[512];
@@ -55,29 +57,42 @@ class BufferedWriter final : public DL_WriterA {
     std::snprintf(text, sizeof text, "%0X", value);
     put(gc, text);
   }
-  void dxfString(int gc, const char* value) const override { put(gc, value); }
+  void dxfString(int gc, const char* value) const override {
+    if (!value) throw DL_NullStrExc();
+    put(gc, value);
+  }
   void dxfString(int gc, const std::string& value) const override { put(gc, value.c_str()); }
 
-  // Writes the text to `file`; false when that fails.
-  bool finish(const std::string& file) const {
+  bool openFailed() const { return !out_ || DL_WriterA::openFailed(); }
+
+  // Writes what is left; false when any write failed.
+  bool finish() const {
+    flush();
+    out_.close();
     close();
-    std::ofstream out(file, std::ios::binary | std::ios::trunc);
-    out.write(text_.data(), static_cast<std::streamsize>(text_.size()));
-    out.close();
-    return static_cast<bool>(out);
+    return static_cast<bool>(out_);
   }
 
  private:
+  static constexpr size_t kChunk = size_t{1} << 20;
   void put(int gc, const char* value) const {
     text_ += gc < 10 ? "  " : gc < 100 ? " " : "";
     text_ += std::to_string(gc);
     text_ += '\n';
     text_ += value;
     text_ += '\n';
+    if (text_.size() >= kChunk) flush();
   }
+  void flush() const {
+    out_.write(text_.data(), static_cast<std::streamsize>(text_.size()));
+    text_.clear();
+  }
+  mutable std::ofstream out_;
   mutable std::string text_;
 };
 
+// Entities carry their layer's colour as well (not BYLAYER): some laser software tells cut
+// from engrave by the entity's own colour and ignores layers.
 DL_Attributes onLayer(const char* layer, int colour) {
   return DL_Attributes(layer, colour, -1, "BYLAYER", 1.0);
 }
@@ -214,7 +229,8 @@ bool writtenWhole(const std::string& file) {
 void writeFile(const SheetDrawing& drawing, const SheetSpec& sheet, const std::string& file,
                const std::string& path) {
   DL_Dxf dxf;
-  // out() sets the version the entity writers follow (it has no setter) and opens the file.
+  // out() sets the version DL_Dxf's entity writers follow (it has no setter, and its default
+  // is not documented); the writer it makes is dropped for ours.
   if (!std::unique_ptr<DL_WriterA>(dxf.out(file.c_str(), DL_Codes::AC1015)))
     throw Error(ErrorKind::Io, "cannot write " + path);
   BufferedWriter dw(file.c_str(), DL_Codes::AC1015);
@@ -226,7 +242,7 @@ void writeFile(const SheetDrawing& drawing, const SheetSpec& sheet, const std::s
   dxf.writeObjects(dw);
   dxf.writeObjectsEnd(dw);
   dw.dxfEOF();
-  if (!dw.finish(file) || !writtenWhole(file)) throw Error(ErrorKind::Io, "cannot write " + path);
+  if (!dw.finish() || !writtenWhole(file)) throw Error(ErrorKind::Io, "cannot write " + path);
 }
 
 }  // namespace

@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <cstdlib>
+#include <cstring>
 #include <thread>
 
 #if defined(__GLIBC__)
@@ -19,7 +20,8 @@
 
 namespace sliceform {
 
-// Hands the free pages of every arena back to the system.
+// Hands the free pages of every arena back to the system. Inside FreeCAD's process too (its
+// export): a pass over the free lists, each arena locked while it is trimmed, once an export.
 inline void releaseFreeMemory() {
 #if defined(__GLIBC__)
   malloc_trim(0);
@@ -27,9 +29,12 @@ inline void releaseFreeMemory() {
 }
 
 // One arena a core, for a process that owns its allocator (the CLI, not FreeCAD): a thread
-// started late shares the memory earlier threads freed.
+// started late shares the memory earlier threads freed. A limit the user set
+// (MALLOC_ARENA_MAX, or glibc's tunables) is left as it is.
 inline void oneArenaPerCore() {
 #if defined(__GLIBC__)
+  const char* tunables = std::getenv("GLIBC_TUNABLES");
+  if (std::getenv("MALLOC_ARENA_MAX") || (tunables && std::strstr(tunables, "arena_max"))) return;
   mallopt(M_ARENA_MAX, static_cast<int>(std::max(2u, std::thread::hardware_concurrency())));
 #endif
 }
