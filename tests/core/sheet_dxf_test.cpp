@@ -7,6 +7,7 @@
 
 #include <dl_creationadapter.h>
 #include <dl_dxf.h>
+#include <dl_writer_ascii.h>
 
 #include <algorithm>
 #include <cmath>
@@ -240,6 +241,51 @@ TEST(SheetDxf, HandleSeedExceedsEveryHandle) {
   const Capture c = readBack(path);
   EXPECT_EQ(c.count("LINE", "CUT"), 70000);
   EXPECT_GT(std::stol(c.strings.at("$HANDSEED"), nullptr, 16), largestHandle(path));
+}
+
+// What dxflib's own writer makes of a number: the oracle for ours, which formats them
+// without sprintf (sheet_dxf.cpp's BufferedWriter).
+std::string dxflibText(double value) {
+  test::TempDir dir;
+  const std::string path = dir.file("one.dxf");
+  {
+    DL_WriterA writer(path.c_str());
+    writer.dxfReal(10, value);
+    writer.close();
+  }
+  std::ifstream in(path);
+  std::string code, text;
+  std::getline(in, code);
+  std::getline(in, text);
+  return text;
+}
+
+TEST(SheetDxf, NumbersAreWrittenAsDxflibWritesThem) {
+  const std::vector<double> values = {
+      0.1,   1.0 / 3, -2.0 / 3, 123456.7890123,      1e-17, 2.5,  1e9 + 0.5,         0.1 + 0.2, -12.5,
+      5e-17, -0.0,    7e-16,    199.999999999999999, 1e-5,  42.0, 3.0000000000000004};
+  SheetDrawing d;
+  CutLoop loop;
+  for (size_t i = 0; i + 1 < values.size(); i += 2)
+    loop.push_back(line({values[i], values[i + 1]}, {values[i + 1], values[i]}));
+  d.cut.push_back(loop);
+  test::TempDir dir;
+  const std::string path = dir.file("numbers.dxf");
+  writeSheetDxf(d, SheetSpec{}, path);
+  // Each LINE's start and end points (group codes 10, 20, 11, 21), in the order written.
+  std::ifstream in(path);
+  std::string code, value;
+  std::vector<std::string> written;
+  bool line = false;
+  while (std::getline(in, code) && std::getline(in, value)) {
+    const int c = std::stoi(code);
+    if (c == 0) line = value == "LINE";
+    if (line && (c == 10 || c == 20 || c == 11 || c == 21)) written.push_back(value);
+  }
+  std::vector<std::string> expected;
+  for (size_t i = 0; i + 1 < values.size(); i += 2)
+    for (double v : {values[i], values[i + 1], values[i + 1], values[i]}) expected.push_back(dxflibText(v));
+  EXPECT_EQ(written, expected);
 }
 
 TEST(SheetDxf, UnwritableFolderIsAnIoError) {
