@@ -42,7 +42,7 @@ int exitCode(sliceform::ErrorKind kind) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  // Peak memory, occ/Top.brep: 261-330 MB in six runs before, 214-259 MB in four with this
+  // Peak memory, occ/Top.brep: 261-330 MB in six runs before, 230-259 MB in three with this
   // and the trim before the STEP file (DesignFilesWriter::start); no slower (ChineseDragon,
   // Pump_TopCover). support/free_memory.hpp says why.
   sliceform::oneArenaPerCore();

@@ -145,7 +145,8 @@ struct Rows {
 // booklet step, had projected every point again (16 bands: 48 projections a point).
 struct Projected {
   std::vector<std::vector<Vec3>> loops;
-  double top = HUGE_VAL, bottom = -HUGE_VAL;
+  double left = HUGE_VAL, right = -HUGE_VAL, top = HUGE_VAL, bottom = -HUGE_VAL;
+  double nearest = -HUGE_VAL;  // the largest depth, towards the viewer
 };
 
 Projected projected(const Placement& pl, const Panel3& panel) {
@@ -154,9 +155,11 @@ Projected projected(const Placement& pl, const Panel3& panel) {
     out.loops.emplace_back();
     out.loops.back().reserve(loop.size());
     for (const Vec3& p : loop) {
-      out.loops.back().push_back(pl.project(p));
-      out.top = std::min(out.top, out.loops.back().back().y);
-      out.bottom = std::max(out.bottom, out.loops.back().back().y);
+      const Vec3 q = pl.project(p);
+      out.loops.back().push_back(q);
+      out.left = std::min(out.left, q.x), out.right = std::max(out.right, q.x);
+      out.top = std::min(out.top, q.y), out.bottom = std::max(out.bottom, q.y);
+      out.nearest = std::max(out.nearest, q.z);
     }
   }
   return out;
@@ -482,10 +485,7 @@ Picture GrowingAssembly::add(int panel) {
   State& s = *state_;
   const Panel3& p = s.panels[panel];
   const Projected seen = projected(s.pl, p);
-  double left = HUGE_VAL, right = -HUGE_VAL;
-  for (const auto& loop : seen.loops)
-    for (const Vec3& at : loop) left = std::min(left, at.x), right = std::max(right, at.x);
-  const double top = seen.top, bottom = seen.bottom;
+  const double left = seen.left, right = seen.right, top = seen.top, bottom = seen.bottom;
   if (left > right) return s.shown;  // nothing to draw
   const auto block = [](double v, int limit, bool up) {
     const int pixel = static_cast<int>(up ? std::ceil(v) : std::floor(v));
@@ -526,12 +526,7 @@ Picture drawAssembly(const std::vector<Panel3>& panels, int widthPixels) {
   std::vector<Projected> seen(panels.size());
   parallelFor(panels.size(), [&](size_t k) { seen[k] = projected(pl, panels[k]); });
   std::vector<std::pair<double, size_t>> nearestFirst;
-  for (size_t k = 0; k < panels.size(); ++k) {
-    double nearest = -HUGE_VAL;
-    for (const auto& loop : panels[k].loops)
-      for (const Vec3& p : loop) nearest = std::max(nearest, dot(p, pl.view.toViewer));
-    nearestFirst.emplace_back(-nearest, k);
-  }
+  for (size_t k = 0; k < panels.size(); ++k) nearestFirst.emplace_back(-seen[k].nearest, k);
   std::stable_sort(nearestFirst.begin(), nearestFirst.end(),
                    [](const auto& a, const auto& b) { return a.first < b.first; });
   const int bands = 16, rows = (pl.height + bands - 1) / bands;
