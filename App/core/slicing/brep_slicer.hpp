@@ -12,8 +12,9 @@
 
 namespace sliceform {
 
-// How the section faces are made. FaceByFace: our own plane/face intersections chained
-// into loops and faces made from them on the plane (slicing/face_by_face.hpp); a plane it
+// How the section faces are made. FaceByFace: our own plane/face intersections (OCCT's
+// section of one face alone where it is not a quadric) chained into loops and faces made
+// from them on the plane (slicing/face_by_face.hpp); a plane it
 // is unsure of goes on to Curves. Curves: BRepAlgoAPI_Section's curves, the same loops and
 // faces (slicing/section_faces.hpp); a plane it is unsure of goes on to Common. Common:
 // BRepAlgoAPI_Common of the solid with a face on each plane, the faces as the Boolean splits

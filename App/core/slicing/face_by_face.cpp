@@ -3,8 +3,10 @@
 
 #include <BRepAdaptor_Curve.hxx>
 #include <BRepAdaptor_Surface.hxx>
+#include <BRepAlgoAPI_Section.hxx>
 #include <BRepBndLib.hxx>
 #include <BRepBuilderAPI_MakeEdge.hxx>
+#include <BRepBuilderAPI_MakeFace.hxx>
 #include <BRepClass_FaceClassifier.hxx>
 #include <BRepTools.hxx>
 #include <BRep_Builder.hxx>
@@ -23,12 +25,14 @@
 #include <TopExp.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopTools_IndexedMapOfShape.hxx>
+#include <TopTools_ListOfShape.hxx>
 #include <TopoDS.hxx>
 #include <TopoDS_Vertex.hxx>
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
 #include <optional>
 #include <tuple>
 
@@ -50,10 +54,19 @@ std::pair<double, double> along(const Bnd_Box& box, const gp_Dir& n) {
   return {lo, hi};
 }
 
+// How near the plane an end of an edge, or a tangent touch, makes this route unsure, at
+// most: the edge's tolerance, or 0.1 µm where the file claims more. OCCT's tolerance is a
+// claim about the faces' fit, not about where the plane is: a sink's circle with a 3 mm
+// tolerance (occ/MODERN_Sink_1.brep) sent every plane within 3 mm of its seam vertex to
+// the Boolean Common, 60-70 ms a plane; that design's exact patches broke rules their
+// polygons keep (9 of 19 emitted as polygons, none since).
+constexpr double kOnPlane = 1e-4;
+
 // Where the plane n·p = d crosses an edge, appended to `out`; false where the route is
 // unsure: an end of the edge on the plane (a vertex of the solid), a tangent touch.
-bool crossings(const TopoDS_Edge& edge, double tolerance, const gp_Dir& n, double d,
+bool crossings(const TopoDS_Edge& edge, double edgeTolerance, const gp_Dir& n, double d,
                std::vector<gp_Pnt>& out) {
+  const double tolerance = std::min(edgeTolerance, kOnPlane);
   const BRepAdaptor_Curve c(edge);
   const double t0 = c.FirstParameter(), t1 = c.LastParameter();
   const auto f = [&](double t) { return n.XYZ().Dot(c.Value(t).XYZ()) - d; };
@@ -171,7 +184,7 @@ bool surfaceCurves(const BRepAdaptor_Surface& s, const gp_Pln& plane, const Bnd_
     }
     return true;
   }
-  // B-splines, surfaces of revolution, tori cut aslant: left to the section. Walking them
+  // B-splines, surfaces of revolution, tori cut aslant: not here (otherSection). Walking them
   // with GeomInt_IntSS was tried: as fast as the section's own walk, but its curves made
   // exact patches break rules their polygons keep (occt-misc Bottom.brep: 9 patches emitted
   // as polygons instead of 3; MODERN_Sink_1: 9 instead of 2).
@@ -319,6 +332,85 @@ TopoDS_Vertex vertexAt(const gp_Pnt& p, double tolerance) {
   return v;
 }
 
+// A crossing of a solid's edge by the plane: where, its vertex, the edge's tolerance.
+struct Crossing {
+  gp_Pnt point;
+  TopoDS_Vertex vertex;
+  double tolerance;
+};
+
+// The section of one face this route does not solve (a B-spline, a surface of revolution, a
+// torus cut aslant) by BRepAlgoAPI_Section of that face alone with a square on the plane,
+// appended to `out`; false where unsure. The section of the whole solid did the same
+// intersection of the face with the plane, after setting up every other face and edge of
+// the solid against every plane of its batch: 60-70 ms a plane on occ/MODERN_Sink_1.brep.
+// Each end of a section edge at one of `crossings` (those of the face's edges) is replaced
+// by that crossing's vertex, which the pieces of the neighbouring faces end at too, so the
+// section chains with them by shared vertices. An end at no crossing must be shared by
+// another section edge of the face (a curve split inside it, a closed curve's own vertex).
+bool otherSection(const TopoDS_Face& face, const Bnd_Box& box, const gp_Pln& plane,
+                  const std::vector<Crossing>& crossings, Handle(TopTools_HSequenceOfShape) out) {
+  const gp_Pnt centre((box.CornerMin().XYZ() + box.CornerMax().XYZ()) / 2);
+  const double half = box.CornerMin().Distance(box.CornerMax()) + 1;
+  gp_Pln square = plane;  // centred on the face's box
+  const gp_XYZ n = plane.Axis().Direction().XYZ();
+  square.SetLocation(centre.XYZ() - n * n.Dot(centre.XYZ() - plane.Location().XYZ()));
+  BRepAlgoAPI_Section section;
+  TopTools_ListOfShape arguments, tools;
+  arguments.Append(face);
+  tools.Append(BRepBuilderAPI_MakeFace(square, -half, half, -half, half).Face());
+  section.SetArguments(arguments);
+  section.SetTools(tools);
+  // As the section of the whole solid (slicing/section_faces.cpp): the walking lines
+  // approximated with their curves on the face, none on the square.
+  section.Approximation(Standard_True);
+  section.ComputePCurveOn1(Standard_True);
+  section.ComputePCurveOn2(Standard_False);
+  section.SetNonDestructive(Standard_True);  // the solid is shared by other threads
+  section.SetRunParallel(Standard_False);
+  section.Build();
+  if (!section.IsDone() || section.HasErrors() || section.HasWarnings()) return false;
+  std::vector<std::pair<TopoDS_Edge, std::pair<TopoDS_Vertex, TopoDS_Vertex>>> edges;
+  std::map<const TopoDS_TShape*, int> uses;  // how many ends each vertex is
+  for (TopExp_Explorer it(section.Shape(), TopAbs_EDGE); it.More(); it.Next()) {
+    const TopoDS_Edge& e = TopoDS::Edge(it.Current());
+    TopoDS_Vertex a, b;
+    TopExp::Vertices(e, a, b);  // a at the first parameter, b at the last
+    if (a.IsNull() || b.IsNull()) return false;
+    edges.push_back({e, {a, b}});
+    ++uses[a.TShape().get()], ++uses[b.TShape().get()];
+  }
+  // The one crossing within the tolerances of `v`; a null vertex for none, nullopt for two.
+  const auto crossingAt = [&](const TopoDS_Vertex& v) -> std::optional<TopoDS_Vertex> {
+    const gp_Pnt p = BRep_Tool::Pnt(v);
+    std::optional<TopoDS_Vertex> found = TopoDS_Vertex();
+    for (const Crossing& c : crossings)
+      if (p.Distance(c.point) <= 2 * (c.tolerance + BRep_Tool::Tolerance(v)) + 1e-5) {
+        if (!found->IsNull()) return std::nullopt;
+        found = c.vertex;
+      }
+    return found;
+  };
+  for (const auto& [e, ends] : edges) {
+    double first = 0, last = 0;
+    const Handle(Geom_Curve) curve = BRep_Tool::Curve(e, first, last);
+    if (curve.IsNull()) return false;
+    End at[2] = {{first, ends.first}, {last, ends.second}};
+    for (End& end : at) {
+      const std::optional<TopoDS_Vertex> crossing = crossingAt(end.vertex);
+      if (!crossing) return false;
+      if (!crossing->IsNull())
+        end.vertex = *crossing;
+      else if (uses[end.vertex.TShape().get()] < 2)
+        return false;  // an end on the face's boundary at no crossing found
+    }
+    Curve c;
+    c.curve = curve, c.first = first, c.last = last, c.tolerance = BRep_Tool::Tolerance(e);
+    out->Append(piece(c, at[0], last, at[1]));
+  }
+  return true;
+}
+
 }  // namespace
 
 FaceByFace::FaceByFace(const TopoDS_Shape& solid, const gp_Dir& normal) : normal_(normal) {
@@ -348,8 +440,6 @@ FaceByFace::FaceByFace(const TopoDS_Shape& solid, const gp_Dir& normal) : normal
 
 Handle(TopTools_HSequenceOfShape) FaceByFace::edges(const gp_Pln& plane) const try {
   const double d = normal_.XYZ().Dot(plane.Location().XYZ());
-  for (const Face& f : faces_)
-    if (!f.solved && d >= f.lo && d <= f.hi) return nullptr;
   // Each edge's crossings and their vertices, shared by the faces on either side.
   std::vector<std::vector<std::pair<gp_Pnt, TopoDS_Vertex>>> crossed(edges_.size());
   for (size_t i = 0; i < edges_.size(); ++i) {
@@ -362,6 +452,13 @@ Handle(TopTools_HSequenceOfShape) FaceByFace::edges(const gp_Pln& plane) const t
   Handle(TopTools_HSequenceOfShape) out = new TopTools_HSequenceOfShape;
   for (const Face& f : faces_) {
     if (d < f.lo || d > f.hi) continue;
+    if (!f.solved) {
+      std::vector<Crossing> at;
+      for (const int e : f.edges)
+        for (const auto& [p, vertex] : crossed[e]) at.push_back({p, vertex, edges_[e].tolerance});
+      if (!otherSection(f.face, f.box, plane, at, out)) return nullptr;
+      continue;
+    }
     const BRepAdaptor_Surface s(f.face, Standard_False);
     std::vector<Curve> curves;
     if (!surfaceCurves(s, plane, f.box, curves)) return nullptr;

@@ -8,10 +8,13 @@
 // and the pieces inside the face are kept. Pieces of two faces meet at the one vertex made
 // for each crossing of their shared edge, so the edges chain into loops by shared vertices.
 //
-// The route answers nothing where it would have to guess or cannot solve, and the caller
-// then asks BRepAlgoAPI_Section: a face of another kind (B-spline, a torus cut aslant), a
-// face on the plane, the plane through a vertex of the solid or tangent to a face, a
-// crossing on none of a face's curves, a piece on a face's boundary.
+// A face of another kind (B-spline, surface of revolution, a torus cut aslant) is cut by
+// BRepAlgoAPI_Section of that face alone with the plane, its curves ending at the same
+// crossing vertices. The route answers nothing where it would have to guess or cannot
+// solve, and the caller then asks BRepAlgoAPI_Section of the whole solid: a face on the
+// plane, the plane through a vertex of the solid or tangent to a face, a crossing on none
+// of a face's curves, a piece on a face's boundary, an end of another face's section at
+// no crossing.
 #pragma once
 
 #include <Bnd_Box.hxx>
