@@ -86,6 +86,30 @@ TEST(ExactPatches, BoxWithWindowsIsBuildable) {
   expectBuildable(test::makeBoxWithWindows(120, 80, 60, 6));
 }
 
+// A patch that breaks a rule is emitted as its polygon before the partner of a hinge it
+// lost: that partner is replaced only if the hinge is still lost once the outlines are
+// checked again. A hinge lost by two patches that break no rule replaces both at once;
+// a replaced patch is never chosen again.
+TEST(Emitted, APatchBreakingARuleGoesBeforeItsHingePartner) {
+  std::vector<ScaffoldHinge> hinges(4);
+  const int ends[4][2] = {{0, 3}, {1, 2}, {4, 5}, {1, 6}};
+  for (int h = 0; h < 4; ++h) hinges[h].u = ends[h][0], hinges[h].v = ends[h][1], hinges[h].holds = h != 3;
+  const std::vector<bool> searchMeets = {true, true, true, true};
+  Emitted e;
+  e.failing = {0};
+  e.meets = {0, 1, 0, 0};  // the fourth does not hold: never a reason
+  std::vector<char> replaced(7, 0);
+  EXPECT_EQ(patchesToReplace(e, hinges, searchMeets, replaced), (std::vector<int>{0, 4, 5}));
+  for (const int k : {0, 4, 5}) replaced[k] = 1;
+  e.failing = {};
+  e.meets = {1, 1, 1, 0};  // the polygon of 0 holds with 3 again
+  EXPECT_TRUE(patchesToReplace(e, hinges, searchMeets, replaced).empty());
+  e.meets = {0, 1, 1, 0};  // it does not: 3 goes too
+  EXPECT_EQ(patchesToReplace(e, hinges, searchMeets, replaced), (std::vector<int>{3}));
+  e.failing = {0};  // the polygon of 0 breaking a rule is not replaced again
+  EXPECT_EQ(patchesToReplace(e, hinges, searchMeets, replaced), (std::vector<int>{3}));
+}
+
 int edgesOfType(const TopoDS_Shape& shape, GeomAbs_CurveType type) {
   int n = 0;
   for (TopExp_Explorer it(shape, TopAbs_EDGE); it.More(); it.Next())

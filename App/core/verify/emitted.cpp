@@ -139,4 +139,20 @@ bool tooClose(const Emitted& e, double spacing) {
   return e.closest.first >= 0 && e.minPatchSpacing < spacing - 1e-6;
 }
 
+std::vector<int> patchesToReplace(const Emitted& e, const std::vector<ScaffoldHinge>& hinges,
+                                  const std::vector<bool>& searchMeets, const std::vector<char>& replaced) {
+  std::set<int> out;
+  const auto failing = [&](int k) { return std::binary_search(e.failing.begin(), e.failing.end(), k); };
+  for (const int k : e.failing)
+    if (!replaced[k]) out.insert(k);
+  for (size_t h = 0; h < hinges.size(); ++h) {
+    const int u = hinges[h].u, v = hinges[h].v;
+    if (!hinges[h].holds || !searchMeets[h] || e.meets[h]) continue;
+    if ((failing(u) && !replaced[u]) || (failing(v) && !replaced[v])) continue;
+    for (const int k : {u, v})
+      if (!replaced[k]) out.insert(k);
+  }
+  return {out.begin(), out.end()};
+}
+
 }  // namespace sliceform

@@ -43,4 +43,13 @@ Emitted checkEmitted(const RealizationInput& input, const std::vector<Region2d>&
 // Whether an emitted pair of stacked patches breaks the spacing rule.
 bool tooClose(const Emitted& e, double spacing);
 
+// Which patches to emit as the search's own polygons next, after `e` checked the outlines:
+// those breaking a rule (e.failing), and both ends of a hinge the search made
+// (`searchMeets`) that the outlines lost, unless an end breaks a rule itself: that end goes
+// first, and the hinge is looked at again once it is replaced, so its partner keeps an
+// exact face that did nothing wrong. Patches in `replaced` are never chosen again; empty
+// when nothing is left to replace.
+std::vector<int> patchesToReplace(const Emitted& e, const std::vector<ScaffoldHinge>& hinges,
+                                  const std::vector<bool>& searchMeets, const std::vector<char>& replaced);
+
 }  // namespace sliceform
