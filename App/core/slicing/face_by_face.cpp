@@ -184,7 +184,7 @@ bool surfaceCurves(const BRepAdaptor_Surface& s, const gp_Pln& plane, const Bnd_
     }
     return true;
   }
-  // B-splines, surfaces of revolution, tori cut aslant: not here (otherSection). Walking them
+  // B-splines, surfaces of revolution, tori cut aslant: not here (cutAlone). Walking them
   // with GeomInt_IntSS was tried: as fast as the section's own walk, but its curves made
   // exact patches break rules their polygons keep (occt-misc Bottom.brep: 9 patches emitted
   // as polygons instead of 3; MODERN_Sink_1: 9 instead of 2).
@@ -339,47 +339,68 @@ struct Crossing {
   double tolerance;
 };
 
-// The section of one face this route does not solve (a B-spline, a surface of revolution, a
-// torus cut aslant) by BRepAlgoAPI_Section of that face alone with a square on the plane,
-// appended to `out`; false where unsure. The section of the whole solid did the same
-// intersection of the face with the plane, after setting up every other face and edge of
-// the solid against every plane of its batch: 60-70 ms a plane on occ/MODERN_Sink_1.brep.
-// Each end of a section edge at one of `crossings` (those of the face's edges) is replaced
-// by that crossing's vertex, which the pieces of the neighbouring faces end at too, so the
-// section chains with them by shared vertices. An end at no crossing must be shared by
-// another section edge of the face (a curve split inside it, a closed curve's own vertex).
-bool otherSection(const TopoDS_Face& face, const Bnd_Box& box, const gp_Pln& plane,
-                  const std::vector<Crossing>& crossings, Handle(TopTools_HSequenceOfShape) out) {
-  const gp_Pnt centre((box.CornerMin().XYZ() + box.CornerMax().XYZ()) / 2);
+// The sections of one face this route does not solve (a B-spline, a surface of revolution,
+// a torus cut aslant) by the planes at `d` (along `n`): BRepAlgoAPI_Section of that face
+// alone with a square on each plane, one Boolean for all of them; per plane its edges,
+// nullopt for every plane where OCCT reports a problem. The section of the whole solid did
+// the same intersections, after setting up every other face and edge of the solid against
+// every plane of its batch: 60-70 ms a plane on occ/MODERN_Sink_1.brep. One Boolean a face
+// and plane set the face up again for each plane (occ/CrankArm.brep: exact patches 2.13 ->
+// 2.59 s; linkrods.step 16 ms a face and plane).
+std::vector<std::optional<std::vector<FaceByFace::AloneEdge>>> cutAlone(const TopoDS_Face& face,
+                                                                        const Bnd_Box& box, const gp_Dir& n,
+                                                                        const gp_Dir& x,
+                                                                        const std::vector<double>& d) {
+  std::vector<std::optional<std::vector<FaceByFace::AloneEdge>>> out(d.size());
+  const gp_XYZ centre = (box.CornerMin().XYZ() + box.CornerMax().XYZ()) / 2;
   const double half = box.CornerMin().Distance(box.CornerMax()) + 1;
-  gp_Pln square = plane;  // centred on the face's box
-  const gp_XYZ n = plane.Axis().Direction().XYZ();
-  square.SetLocation(centre.XYZ() - n * n.Dot(centre.XYZ() - plane.Location().XYZ()));
+  TopoDS_Compound squares;  // on each plane, centred on the face's box
+  BRep_Builder builder;
+  builder.MakeCompound(squares);
+  for (const double at : d) {
+    const gp_Pnt origin(centre - n.XYZ() * (n.XYZ().Dot(centre) - at));
+    builder.Add(squares,
+                BRepBuilderAPI_MakeFace(gp_Pln(gp_Ax3(origin, n, x)), -half, half, -half, half).Face());
+  }
   BRepAlgoAPI_Section section;
   TopTools_ListOfShape arguments, tools;
   arguments.Append(face);
-  tools.Append(BRepBuilderAPI_MakeFace(square, -half, half, -half, half).Face());
+  tools.Append(squares);
   section.SetArguments(arguments);
   section.SetTools(tools);
   // As the section of the whole solid (slicing/section_faces.cpp): the walking lines
-  // approximated with their curves on the face, none on the square.
+  // approximated with their curves on the face, none on the squares.
   section.Approximation(Standard_True);
   section.ComputePCurveOn1(Standard_True);
   section.ComputePCurveOn2(Standard_False);
   section.SetNonDestructive(Standard_True);  // the solid is shared by other threads
   section.SetRunParallel(Standard_False);
   section.Build();
-  if (!section.IsDone() || section.HasErrors() || section.HasWarnings()) return false;
-  std::vector<std::pair<TopoDS_Edge, std::pair<TopoDS_Vertex, TopoDS_Vertex>>> edges;
-  std::map<const TopoDS_TShape*, int> uses;  // how many ends each vertex is
+  if (!section.IsDone() || section.HasErrors() || section.HasWarnings()) return out;
+  for (auto& edges : out) edges.emplace();
   for (TopExp_Explorer it(section.Shape(), TopAbs_EDGE); it.More(); it.Next()) {
-    const TopoDS_Edge& e = TopoDS::Edge(it.Current());
-    TopoDS_Vertex a, b;
-    TopExp::Vertices(e, a, b);  // a at the first parameter, b at the last
-    if (a.IsNull() || b.IsNull()) return false;
-    edges.push_back({e, {a, b}});
-    ++uses[a.TShape().get()], ++uses[b.TShape().get()];
+    FaceByFace::AloneEdge e{TopoDS::Edge(it.Current()), {}, {}};
+    TopExp::Vertices(e.edge, e.first, e.last);  // FORWARD at the first parameter
+    if (e.first.IsNull() || e.last.IsNull()) return decltype(out)(d.size());
+    // Each edge to its plane, the nearest: planes lie a slice's spacing apart.
+    const double p = n.XYZ().Dot(BRep_Tool::Pnt(e.first).XYZ());
+    size_t nearest = 0;
+    for (size_t k = 1; k < d.size(); ++k)
+      if (std::abs(d[k] - p) < std::abs(d[nearest] - p)) nearest = k;
+    out[nearest]->push_back(e);
   }
+  return out;
+}
+
+// The edges of a face cut alone by a plane, appended to `out`, each end at one of
+// `crossings` (those of the face's edges) given that crossing's vertex, which the pieces of
+// the neighbouring faces end at too, so that they chain by shared vertices; false where
+// unsure. An end at no crossing must be shared by another edge of the face's section (a
+// curve split inside the face, a closed curve's own vertex); an end near two is unsure.
+bool joinAtCrossings(const std::vector<FaceByFace::AloneEdge>& edges, const std::vector<Crossing>& crossings,
+                     Handle(TopTools_HSequenceOfShape) out) {
+  std::map<const TopoDS_TShape*, int> uses;  // how many ends each vertex is
+  for (const FaceByFace::AloneEdge& e : edges) ++uses[e.first.TShape().get()], ++uses[e.last.TShape().get()];
   // The one crossing within the tolerances of `v`; a null vertex for none, nullopt for two.
   const auto crossingAt = [&](const TopoDS_Vertex& v) -> std::optional<TopoDS_Vertex> {
     const gp_Pnt p = BRep_Tool::Pnt(v);
@@ -391,11 +412,11 @@ bool otherSection(const TopoDS_Face& face, const Bnd_Box& box, const gp_Pln& pla
       }
     return found;
   };
-  for (const auto& [e, ends] : edges) {
+  for (const FaceByFace::AloneEdge& e : edges) {
     double first = 0, last = 0;
-    const Handle(Geom_Curve) curve = BRep_Tool::Curve(e, first, last);
+    const Handle(Geom_Curve) curve = BRep_Tool::Curve(e.edge, first, last);
     if (curve.IsNull()) return false;
-    End at[2] = {{first, ends.first}, {last, ends.second}};
+    End at[2] = {{first, e.first}, {last, e.last}};
     for (End& end : at) {
       const std::optional<TopoDS_Vertex> crossing = crossingAt(end.vertex);
       if (!crossing) return false;
@@ -405,7 +426,7 @@ bool otherSection(const TopoDS_Face& face, const Bnd_Box& box, const gp_Pln& pla
         return false;  // an end on the face's boundary at no crossing found
     }
     Curve c;
-    c.curve = curve, c.first = first, c.last = last, c.tolerance = BRep_Tool::Tolerance(e);
+    c.curve = curve, c.first = first, c.last = last, c.tolerance = BRep_Tool::Tolerance(e.edge);
     out->Append(piece(c, at[0], last, at[1]));
   }
   return true;
@@ -438,8 +459,48 @@ FaceByFace::FaceByFace(const TopoDS_Shape& solid, const gp_Dir& normal) : normal
   }
 }
 
-Handle(TopTools_HSequenceOfShape) FaceByFace::edges(const gp_Pln& plane) const try {
-  const double d = normal_.XYZ().Dot(plane.Location().XYZ());
+std::vector<Handle(TopTools_HSequenceOfShape)> FaceByFace::edges(const std::vector<gp_Pln>& planes) const {
+  std::vector<double> d;
+  for (const gp_Pln& plane : planes) d.push_back(normal_.XYZ().Dot(plane.Location().XYZ()));
+  const gp_Dir x = planes.empty() ? gp_Dir() : planes.front().XAxis().Direction();
+  // The faces this route does not solve, each cut by the planes that reach it at once.
+  Alone alone(faces_.size());
+  for (size_t i = 0; i < faces_.size(); ++i) {
+    const Face& f = faces_[i];
+    if (f.solved) continue;
+    std::vector<double> reach;
+    for (const double at : d)
+      if (at >= f.lo && at <= f.hi) reach.push_back(at);
+    if (reach.empty()) continue;
+    const auto cut = [&](const std::vector<double>& at) {
+      try {
+        return cutAlone(f.face, f.box, normal_, x, at);
+      } catch (const Standard_Failure&) {
+        return std::vector<std::optional<std::vector<AloneEdge>>>(at.size());  // each plane unsure
+      }
+    };
+    std::vector<std::optional<std::vector<AloneEdge>>> cuts = cut(reach);
+    // OCCT's doubt about one plane (a warning: a too small edge) is about all of the
+    // Boolean's: where it doubts, each plane is cut alone again.
+    if (reach.size() > 1 && !cuts.front())
+      for (size_t r = 0; r < reach.size(); ++r) cuts[r] = std::move(cut({reach[r]}).front());
+    alone[i].resize(d.size());
+    for (size_t k = 0, r = 0; k < d.size(); ++k)
+      if (d[k] >= f.lo && d[k] <= f.hi) alone[i][k] = std::move(cuts[r++]);
+  }
+  std::vector<Handle(TopTools_HSequenceOfShape)> out;
+  for (size_t k = 0; k < planes.size(); ++k) {
+    try {
+      out.push_back(planeEdges(planes[k], d[k], alone, k));
+    } catch (const Standard_Failure&) {
+      out.push_back(nullptr);
+    }
+  }
+  return out;
+}
+
+Handle(TopTools_HSequenceOfShape) FaceByFace::planeEdges(const gp_Pln& plane, double d, const Alone& alone,
+                                                         size_t k) const {
   // Each edge's crossings and their vertices, shared by the faces on either side.
   std::vector<std::vector<std::pair<gp_Pnt, TopoDS_Vertex>>> crossed(edges_.size());
   for (size_t i = 0; i < edges_.size(); ++i) {
@@ -450,13 +511,15 @@ Handle(TopTools_HSequenceOfShape) FaceByFace::edges(const gp_Pln& plane) const t
     for (const gp_Pnt& p : points) crossed[i].emplace_back(p, vertexAt(p, e.tolerance));
   }
   Handle(TopTools_HSequenceOfShape) out = new TopTools_HSequenceOfShape;
-  for (const Face& f : faces_) {
+  for (size_t i = 0; i < faces_.size(); ++i) {
+    const Face& f = faces_[i];
     if (d < f.lo || d > f.hi) continue;
     if (!f.solved) {
+      if (!alone[i][k]) return nullptr;
       std::vector<Crossing> at;
       for (const int e : f.edges)
         for (const auto& [p, vertex] : crossed[e]) at.push_back({p, vertex, edges_[e].tolerance});
-      if (!otherSection(f.face, f.box, plane, at, out)) return nullptr;
+      if (!joinAtCrossings(*alone[i][k], at, out)) return nullptr;
       continue;
     }
     const BRepAdaptor_Surface s(f.face, Standard_False);
@@ -519,8 +582,6 @@ Handle(TopTools_HSequenceOfShape) FaceByFace::edges(const gp_Pln& plane) const t
     }
   }
   return out;
-} catch (const Standard_Failure&) {
-  return nullptr;
 }
 
 }  // namespace sliceform

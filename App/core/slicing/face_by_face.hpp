@@ -22,9 +22,11 @@
 #include <TopoDS_Edge.hxx>
 #include <TopoDS_Face.hxx>
 #include <TopoDS_Shape.hxx>
+#include <TopoDS_Vertex.hxx>
 #include <gp_Dir.hxx>
 #include <gp_Pln.hxx>
 
+#include <optional>
 #include <vector>
 
 namespace sliceform {
@@ -35,9 +37,16 @@ class FaceByFace {
   // plane asked for later. Only reads the solid; `edges` may run on several threads at once.
   FaceByFace(const TopoDS_Shape& solid, const gp_Dir& normal);
 
-  // The section edges of `plane` (its normal the one given): empty where the plane misses
-  // the solid, a null handle where this route is unsure.
-  Handle(TopTools_HSequenceOfShape) edges(const gp_Pln& plane) const;
+  // The section edges of each of `planes` (their normal the one given): empty where a
+  // plane misses the solid, a null handle where this route is unsure. A face of another
+  // kind is cut by all the planes that reach it in one Boolean.
+  std::vector<Handle(TopTools_HSequenceOfShape)> edges(const std::vector<gp_Pln>& planes) const;
+
+  // A section edge of a face cut alone by OCCT, its vertices at its first and last parameter.
+  struct AloneEdge {
+    TopoDS_Edge edge;
+    TopoDS_Vertex first, last;
+  };
 
  private:
   struct Edge {
@@ -53,6 +62,13 @@ class FaceByFace {
     std::vector<int> edges;  // indices into edges_, each once (a seam too)
     bool solved;             // whether the planes cut it in conics (see solvedBy)
   };
+  // Per face and plane, the edges of a face cut alone (nullopt where OCCT was unsure; empty
+  // for the faces this route solves).
+  using Alone = std::vector<std::vector<std::optional<std::vector<AloneEdge>>>>;
+  // The section edges of planes[k], at d along the normal.
+  Handle(TopTools_HSequenceOfShape)
+      planeEdges(const gp_Pln& plane, double d, const Alone& alone, size_t k) const;
+
   gp_Dir normal_;
   std::vector<Edge> edges_;
   std::vector<Face> faces_;

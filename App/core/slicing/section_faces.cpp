@@ -152,8 +152,10 @@ std::vector<std::optional<SectionFaces>> sectionFaces(const TopoDS_Shape& solid,
   std::vector<std::optional<SectionFaces>> out(n);
   // Our own intersections first, plane by plane; OCCT's section for the planes left.
   std::vector<size_t> rest;
+  const std::vector<Handle(TopTools_HSequenceOfShape)> byPlane =
+      own ? own->edges(planes) : std::vector<Handle(TopTools_HSequenceOfShape)>(n);
   for (size_t k = 0; k < n; ++k) {
-    const Handle(TopTools_HSequenceOfShape) edges = own ? own->edges(planes[k]) : nullptr;
+    const Handle(TopTools_HSequenceOfShape)& edges = byPlane[k];
     if (!edges.IsNull() && edges->IsEmpty()) {
       out[k] = SectionFaces{TopoDS_Shape(), SectionRoute::FaceByFace};
       continue;
