@@ -31,6 +31,12 @@
 
 namespace sliceform {
 
+// OCCT's section curves of `shape` by the faces of `cutters` (BRepAlgoAPI_Section), as both
+// routes that ask OCCT want them: the walking lines approximated with their curves on
+// `shape`'s faces, none on the cutters, `shape` only read (other threads share it). A null
+// shape where OCCT reports an error, or with `strict` also a warning.
+TopoDS_Shape sectionCurves(const TopoDS_Shape& shape, const TopoDS_Shape& cutters, bool strict);
+
 class FaceByFace {
  public:
   // `solid`'s faces and edges, with where each lies along `normal`, the normal of every

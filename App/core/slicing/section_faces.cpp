@@ -1,7 +1,6 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 #include "slicing/section_faces.hpp"
 
-#include <BRepAlgoAPI_Section.hxx>
 #include <BRepBuilderAPI_MakeFace.hxx>
 #include <BRepTools_WireExplorer.hxx>
 #include <BRep_Builder.hxx>
@@ -10,7 +9,6 @@
 #include <TopExp.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopTools_HSequenceOfShape.hxx>
-#include <TopTools_ListOfShape.hxx>
 #include <TopoDS.hxx>
 #include <TopoDS_Compound.hxx>
 #include <TopoDS_Vertex.hxx>
@@ -174,28 +172,13 @@ std::vector<std::optional<SectionFaces>> sectionFaces(const TopoDS_Shape& solid,
   builder.MakeCompound(cutters);
   for (const size_t k : rest)
     builder.Add(cutters, BRepBuilderAPI_MakeFace(planes[k], -halfSize, halfSize, -halfSize, halfSize).Face());
-  BRepAlgoAPI_Section section;
-  TopTools_ListOfShape arguments, tools;
-  arguments.Append(solid);
-  tools.Append(cutters);
-  section.SetArguments(arguments);
-  section.SetTools(tools);
-  // Curves only: the faces are made from them below, on the plane. Measured on 128
-  // planes of occ/Pump_TopCover.brep (B-spline faces), one core: the walking lines
-  // approximated with their curves on the solid's faces 8.3 s, in 3D alone 40 s, not
-  // approximated 36 s (and polylines of ~1000 points that made the slot Booleans 60x
-  // slower on screw.step). On the cutter planes no curves are needed.
-  section.Approximation(Standard_True);
-  section.ComputePCurveOn1(Standard_True);
-  section.ComputePCurveOn2(Standard_False);
-  section.SetNonDestructive(Standard_True);  // the solid is shared by other threads
-  section.SetRunParallel(Standard_False);
-  section.Build();
-  if (!section.IsDone() || section.HasErrors()) return out;
+  // A warning here (a too small edge) still leaves curves the checks below take or refuse.
+  const TopoDS_Shape section = sectionCurves(solid, cutters, false);
+  if (section.IsNull()) return out;
   // Each edge to its plane, by one of its vertices.
   std::vector<Handle(TopTools_HSequenceOfShape)> edges(rest.size());
   for (auto& e : edges) e = new TopTools_HSequenceOfShape;
-  for (TopExp_Explorer it(section.Shape(), TopAbs_EDGE); it.More(); it.Next()) {
+  for (TopExp_Explorer it(section, TopAbs_EDGE); it.More(); it.Next()) {
     const TopExp_Explorer vertex(it.Current(), TopAbs_VERTEX);
     if (!vertex.More()) return out;
     const gp_Pnt at = BRep_Tool::Pnt(TopoDS::Vertex(vertex.Current()));
