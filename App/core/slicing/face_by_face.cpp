@@ -312,8 +312,8 @@ TopoDS_Edge piece(const Curve& c, const End& a, double tb, const End& b) {
 }
 
 // Whether this route solves the sections of the face by planes normal to `n`: planes,
-// cylinders, cones, spheres, and tori across or along the planes. A torus aslant is left to
-// the section at once, rather than after the plane's other faces were cut.
+// cylinders, cones, spheres, and tori across or along the planes. A face of any other kind,
+// a torus aslant too, is cut by OCCT alone (cutAlone).
 bool solvedBy(const BRepAdaptor_Surface& s, const gp_Dir& n) {
   const GeomAbs_SurfaceType type = s.GetType();
   if (type == GeomAbs_Torus) {

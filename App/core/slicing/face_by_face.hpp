@@ -66,7 +66,7 @@ class FaceByFace {
     double lo, hi;
     double uv[4];            // its parameter box: u min, u max, v min, v max
     std::vector<int> edges;  // indices into edges_, each once (a seam too)
-    bool solved;             // whether the planes cut it in conics (see solvedBy)
+    bool solved;             // whether this route cuts it itself (solvedBy), else cutAlone
   };
   // Per face and plane, the edges of a face cut alone (nullopt where OCCT was unsure; empty
   // for the faces this route solves).

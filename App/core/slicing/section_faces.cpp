@@ -148,7 +148,7 @@ std::vector<std::optional<SectionFaces>> sectionFaces(const TopoDS_Shape& solid,
     planes.emplace_back(gp_Ax3(origin, toDir(frame.normal), toDir(frame.xAxis)));
   }
   std::vector<std::optional<SectionFaces>> out(n);
-  // Our own intersections first, plane by plane; OCCT's section for the planes left.
+  // Our own intersections first, all the planes at once; OCCT's section for the planes left.
   std::vector<size_t> rest;
   const std::vector<Handle(TopTools_HSequenceOfShape)> byPlane =
       own ? own->edges(planes) : std::vector<Handle(TopTools_HSequenceOfShape)>(n);
