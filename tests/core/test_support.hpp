@@ -3,12 +3,20 @@
 #pragma once
 
 #include <BRepAlgoAPI_Cut.hxx>
+#include <BRepBuilderAPI_MakeEdge.hxx>
+#include <BRepBuilderAPI_MakeWire.hxx>
+#include <BRepOffsetAPI_ThruSections.hxx>
 #include <BRepPrimAPI_MakeBox.hxx>
 #include <BRepPrimAPI_MakeCylinder.hxx>
 #include <BRepPrimAPI_MakeSphere.hxx>
 #include <BRepPrimAPI_MakeTorus.hxx>
+#include <BRep_Builder.hxx>
+#include <TopExp_Explorer.hxx>
+#include <TopoDS.hxx>
 #include <TopoDS_Shape.hxx>
 #include <gp_Ax2.hxx>
+#include <gp_Circ.hxx>
+#include <gp_Elips.hxx>
 
 #include <atomic>
 #include <chrono>
@@ -99,6 +107,31 @@ inline TopoDS_Shape cut(const TopoDS_Shape& a, const TopoDS_Shape& b) {
   BRepAlgoAPI_Cut op(a, b);
   if (!op.IsDone()) throw std::runtime_error("BRepAlgoAPI_Cut failed");
   return op.Shape();
+}
+
+// A loft through a circle, an ellipse and a smaller circle (its side one B-spline face),
+// bored across: free-form faces the face-by-face route hands to OCCT's section one by one.
+// With `looseness`, every edge and vertex claims that many mm of tolerance, as some real
+// files do (1-3 mm), and OCCT's sections of it are often wrong: a face's boundary circle for
+// its section, a plane read as missing the solid, faces larger than the solid's section.
+inline TopoDS_Shape boredLoft(double looseness = 0) {
+  BRepOffsetAPI_ThruSections loft(Standard_True, Standard_False);
+  const auto wire = [](const TopoDS_Edge& e) { return BRepBuilderAPI_MakeWire(e).Wire(); };
+  loft.AddWire(wire(BRepBuilderAPI_MakeEdge(gp_Circ(gp_Ax2(gp_Pnt(0, 0, 0), gp_Dir(0, 0, 1)), 10)).Edge()));
+  loft.AddWire(
+      wire(BRepBuilderAPI_MakeEdge(gp_Elips(gp_Ax2(gp_Pnt(1, 0, 10), gp_Dir(0, 0, 1)), 12, 7)).Edge()));
+  loft.AddWire(wire(BRepBuilderAPI_MakeEdge(gp_Circ(gp_Ax2(gp_Pnt(0, 0, 20), gp_Dir(0, 0, 1)), 6)).Edge()));
+  loft.Build();
+  const TopoDS_Shape shape = cut(
+      loft.Shape(), BRepPrimAPI_MakeCylinder(gp_Ax2(gp_Pnt(0, -20, 9), gp_Dir(0, 1, 0)), 2.5, 40).Shape());
+  if (looseness > 0) {
+    BRep_Builder builder;
+    for (TopExp_Explorer e(shape, TopAbs_EDGE); e.More(); e.Next())
+      builder.UpdateEdge(TopoDS::Edge(e.Current()), looseness);
+    for (TopExp_Explorer v(shape, TopAbs_VERTEX); v.More(); v.Next())
+      builder.UpdateVertex(TopoDS::Vertex(v.Current()), looseness);
+  }
+  return shape;
 }
 
 // A sphere of radius outer with a concentric spherical void of radius inner.

@@ -61,6 +61,11 @@ std::pair<double, double> along(const Bnd_Box& box, const gp_Dir& n) {
 // the Boolean Common, 60-70 ms a plane; that design's exact patches broke rules their
 // polygons keep (9 of 19 emitted as polygons, none since).
 constexpr double kOnPlane = 1e-4;
+// mm an edge of OCCT's cut of a face may lie off its plane, at its middle: its curve is the
+// face's intersection with the plane, approximated. Not the edge's tolerance: a loose edge
+// of the solid (1-3 mm) lying near a plane came back as that plane's section (a loft's
+// boundary circle 0.8 mm below the plane, test::boredLoft).
+constexpr double kOffPlane = 1e-2;
 
 // Where the plane n·p = d crosses an edge, appended to `out`; false where the route is
 // unsure: an end of the edge on the plane (a vertex of the solid), a tangent touch.
@@ -289,19 +294,23 @@ TopAbs_State classify(const TopoDS_Face& face, const BRepAdaptor_Surface& s, con
   return classifier.State();
 }
 
-// A vertex at a crossing of a solid's edge, or at a free end of a curve.
+// A vertex at a crossing of a solid's edge, or at a free end of a curve; `own` when this
+// route made it, false for a vertex of OCCT's section, which may be the solid's own.
 struct End {
   double t;
   TopoDS_Vertex vertex;
+  bool own = true;
 };
 
 TopoDS_Edge piece(const Curve& c, const End& a, double tb, const End& b) {
   BRep_Builder builder;
   // The vertices cover where the curve meets them: a crossing lies on the solid's edge,
-  // which is only within its tolerance of the face.
-  for (const auto& [t, v] : {std::pair{a.t, a.vertex}, std::pair{tb, b.vertex}}) {
+  // which is only within its tolerance of the face. Only the route's own vertices are
+  // widened: the solid's are shared with every thread slicing it (joinAtCrossings refuses
+  // a piece whose OCCT vertex does not cover its end).
+  for (const auto& [t, v, own] : {std::tuple{a.t, a.vertex, a.own}, std::tuple{tb, b.vertex, b.own}}) {
     const double gap = c.curve->Value(t).Distance(BRep_Tool::Pnt(v));
-    if (gap > BRep_Tool::Tolerance(v)) builder.UpdateVertex(v, gap * 1.01);
+    if (own && gap > BRep_Tool::Tolerance(v)) builder.UpdateVertex(v, gap * 1.01);
   }
   TopoDS_Edge edge;
   builder.MakeEdge(edge, c.curve, std::max(c.tolerance, Precision::Confusion()));
@@ -365,17 +374,25 @@ std::vector<std::optional<std::vector<FaceByFace::AloneEdge>>> cutAlone(const To
   const TopoDS_Shape section = sectionCurves(face, squares, true);
   if (section.IsNull()) return out;
   for (auto& edges : out) edges.emplace();
+  std::vector<bool> unsure(d.size(), false);
   for (TopExp_Explorer it(section, TopAbs_EDGE); it.More(); it.Next()) {
     FaceByFace::AloneEdge e{TopoDS::Edge(it.Current()), {}, {}};
     TopExp::Vertices(e.edge, e.first, e.last);  // FORWARD at the first parameter
-    if (e.first.IsNull() || e.last.IsNull()) return decltype(out)(d.size());
-    // Each edge to its plane, the nearest: planes lie a slice's spacing apart.
-    const double p = n.XYZ().Dot(BRep_Tool::Pnt(e.first).XYZ());
+    double first = 0, last = 0;
+    const Handle(Geom_Curve) curve = BRep_Tool::Curve(e.edge, first, last);
+    if (e.first.IsNull() || e.last.IsNull() || curve.IsNull()) return decltype(out)(d.size());
+    // Each edge to its plane, the nearest to its middle (planes lie a slice's spacing
+    // apart): an end may be a vertex of the solid that claims a loose tolerance. An edge
+    // whose middle is off that plane (kOffPlane) is not its section: the plane is unsure.
+    const double p = n.XYZ().Dot(curve->Value((first + last) / 2).XYZ());
     size_t nearest = 0;
     for (size_t k = 1; k < d.size(); ++k)
       if (std::abs(d[k] - p) < std::abs(d[nearest] - p)) nearest = k;
+    if (std::abs(d[nearest] - p) > kOffPlane) unsure[nearest] = true;
     out[nearest]->push_back(e);
   }
+  for (size_t k = 0; k < d.size(); ++k)
+    if (unsure[k]) out[k].reset();
   return out;
 }
 
@@ -403,14 +420,16 @@ bool joinAtCrossings(const std::vector<FaceByFace::AloneEdge>& edges, const std:
     double first = 0, last = 0;
     const Handle(Geom_Curve) curve = BRep_Tool::Curve(e.edge, first, last);
     if (curve.IsNull()) return false;
-    End at[2] = {{first, e.first}, {last, e.last}};
+    End at[2] = {{first, e.first, false}, {last, e.last, false}};
     for (End& end : at) {
       const std::optional<TopoDS_Vertex> crossing = crossingAt(end.vertex);
       if (!crossing) return false;
       if (!crossing->IsNull())
-        end.vertex = *crossing;
+        end.vertex = *crossing, end.own = true;
       else if (uses[end.vertex.TShape().get()] < 2)
         return false;  // an end on the face's boundary at no crossing found
+      else if (curve->Value(end.t).Distance(BRep_Tool::Pnt(end.vertex)) > BRep_Tool::Tolerance(end.vertex))
+        return false;  // OCCT's vertex does not cover the end of its own edge
     }
     Curve c;
     c.curve = curve, c.first = first, c.last = last, c.tolerance = BRep_Tool::Tolerance(e.edge);
@@ -490,8 +509,10 @@ std::vector<Handle(TopTools_HSequenceOfShape)> FaceByFace::edges(const std::vect
     };
     std::vector<std::optional<std::vector<AloneEdge>>> cuts = cut(reach);
     // OCCT's doubt about one plane (a warning: a too small edge) is about all of the
-    // Boolean's: where it doubts, each plane is cut alone again.
-    if (reach.size() > 1 && !cuts.front())
+    // Boolean's: where it doubts, each plane is cut alone again. (One plane unsure of its
+    // own edges, cutAlone's check, leaves the others as they are.)
+    if (reach.size() > 1 &&
+        std::none_of(cuts.begin(), cuts.end(), [](const auto& c) { return c.has_value(); }))
       for (size_t r = 0; r < reach.size(); ++r) cuts[r] = std::move(cut({reach[r]}).front());
     alone[i].resize(d.size());
     for (size_t k = 0, r = 0; k < d.size(); ++k)
