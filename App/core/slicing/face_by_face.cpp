@@ -351,11 +351,11 @@ struct Crossing {
 // The sections of one face this route does not solve (a B-spline, a surface of revolution,
 // a torus cut aslant) by the planes at `d` (along `n`): BRepAlgoAPI_Section of that face
 // alone with a square on each plane, one Boolean for all of them; per plane its edges,
-// nullopt for every plane where OCCT reports a problem. The section of the whole solid did
-// the same intersections, after setting up every other face and edge of the solid against
-// every plane of its batch: 60-70 ms a plane on occ/MODERN_Sink_1.brep. One Boolean a face
-// and plane set the face up again for each plane (occ/CrankArm.brep's exact patches 2.33 s,
-// 1.87 with one for all).
+// nullopt for every plane where OCCT reports a problem or an edge lies off its plane. The
+// section of the whole solid did the same intersections, after setting up every other face
+// and edge of the solid against every plane of its batch: 60-70 ms a plane on
+// occ/MODERN_Sink_1.brep. One Boolean a face and plane set the face up again for each plane
+// (occ/CrankArm.brep's exact patches 2.33 s, 1.87 with one for all).
 std::vector<std::optional<std::vector<FaceByFace::AloneEdge>>> cutAlone(const TopoDS_Face& face,
                                                                         const Bnd_Box& box, const gp_Dir& n,
                                                                         const gp_Dir& x,
@@ -383,12 +383,17 @@ std::vector<std::optional<std::vector<FaceByFace::AloneEdge>>> cutAlone(const To
     if (e.first.IsNull() || e.last.IsNull() || curve.IsNull()) return decltype(out)(d.size());
     // Each edge to its plane, the nearest to its middle (planes lie a slice's spacing
     // apart): an end may be a vertex of the solid that claims a loose tolerance. An edge
-    // whose middle is off that plane (kOffPlane) is not its section: the plane is unsure.
+    // with its middle or an end off that plane (kOffPlane) is not its section: OCCT took
+    // a loose edge of the face for it. Every plane within the edge's tolerance of it is
+    // then unsure: OCCT may have matched it to any of them.
     const double p = n.XYZ().Dot(curve->Value((first + last) / 2).XYZ());
     size_t nearest = 0;
     for (size_t k = 1; k < d.size(); ++k)
       if (std::abs(d[k] - p) < std::abs(d[nearest] - p)) nearest = k;
-    if (std::abs(d[nearest] - p) > kOffPlane) unsure[nearest] = true;
+    const auto off = [&](double t) { return std::abs(n.XYZ().Dot(curve->Value(t).XYZ()) - d[nearest]); };
+    if (std::abs(d[nearest] - p) > kOffPlane || off(first) > kOffPlane || off(last) > kOffPlane)
+      for (size_t k = 0; k < d.size(); ++k)
+        if (k == nearest || std::abs(d[k] - p) <= BRep_Tool::Tolerance(e.edge) + kOffPlane) unsure[k] = true;
     out[nearest]->push_back(e);
   }
   for (size_t k = 0; k < d.size(); ++k)

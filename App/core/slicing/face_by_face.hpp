@@ -68,8 +68,8 @@ class FaceByFace {
     std::vector<int> edges;  // indices into edges_, each once (a seam too)
     bool solved;             // whether this route cuts it itself (solvedBy), else cutAlone
   };
-  // Per face and plane, the edges of a face cut alone (nullopt where OCCT was unsure; empty
-  // for the faces this route solves).
+  // Per face and plane, the edges of a face cut alone (nullopt where OCCT was unsure or an
+  // edge lies off its plane; empty for the faces this route solves).
   using Alone = std::vector<std::vector<std::optional<std::vector<AloneEdge>>>>;
   // The section edges of planes[k], at d along the normal.
   Handle(TopTools_HSequenceOfShape)
