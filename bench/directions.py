@@ -5,7 +5,9 @@
 the frame auto chose given as --u/--v (the one design auto cannot do without), every file
 written each time. Measures only; asserts nothing about speed.
 
-    /usr/bin/python3 bench/directions.py MODEL ... [--repeat 3] [--out FILE.json]
+    /usr/bin/python3 bench/directions.py MODEL ... [--repeat 3] [--out FILE.json] [-- DESIGN OPTIONS]
+
+Options after `--` go to every design (e.g. `-- --fill-holes` for an open mesh).
 """
 import argparse
 import json
@@ -17,19 +19,24 @@ import tempfile
 import run
 
 ROOT = run.ROOT
+OPTIONS = []  # given after --, for every design
 
 
 def one(cli, model, extra, tmp):
     out = os.path.join(tmp, "design")
     shutil.rmtree(out, ignore_errors=True)
-    r = run.timed([cli, "design", model, "--size", "150", "-o", out] + extra, tmp)
+    r = run.timed([cli, "design", model, "--size", "150", "-o", out] + OPTIONS + extra, tmp)
     report = os.path.join(out, "report.json")
     if r["rc"] not in (0, 1) or not os.path.exists(report):
         return {"wall_s": None, "error": r["error"] or "exit %d" % r["rc"]}
     rep = json.load(open(report))
     sheets = rep.get("sheets", {}).get("count")
-    return {"wall_s": r["wall_s"], "buildable": r["rc"] == 0, "u": rep["parameters"]["u"],
-            "v": rep["parameters"]["v"], "patches": len(rep.get("patches", [])), "sheets": sheets}
+    q = rep.get("quality", {})
+    silhouette = [q.get("silhouette_iou_" + a) for a in "uvw"]
+    return {"wall_s": r["wall_s"], "buildable": rep.get("verdict", {}).get("buildable", False),
+            "u": rep["parameters"]["u"], "v": rep["parameters"]["v"], "patches": len(rep.get("patches", [])),
+            "sheets": sheets, "volume_iou": q.get("volume_iou"),
+            "silhouette_iou": sum(silhouette) / 3 if None not in silhouette else None}
 
 
 def bench(cli, model, repeat, tmp):
@@ -45,16 +52,26 @@ def bench(cli, model, repeat, tmp):
     return row
 
 
+def design_cell(x):
+    """buildable, volume IoU, mean silhouette IoU, patches, sheets"""
+    if not x.get("wall_s"):
+        return "-"
+    iou = lambda v: "%.2f" % v if v is not None else "-"
+    return "%s, %s, %s, %s, %s" % ("yes" if x["buildable"] else "no", iou(x.get("volume_iou")),
+                                   iou(x.get("silhouette_iou")), x.get("patches"), x.get("sheets"))
+
+
 def table(rows):
     lines = ["| model | given s | auto s | chosen frame alone s | auto / given | auto / chosen alone "
-             "| given: patches, sheets | auto: patches, sheets |", "|---|" + "---:|" * 5 + "---|---|"]
+             "| given: buildable, volume IoU, silhouette IoU, patches, sheets | auto: the same |",
+             "|---|" + "---:|" * 5 + "---|---|"]
     for model, r in rows.items():
         g, a, c = r["given"], r["auto"], r.get("chosen", {})
         ratio = lambda x, y: "%.1f" % (x / y) if x and y else "-"
-        lines.append("| %s | %s | %s | %s | %s | %s | %s, %s | %s, %s |" % (
+        lines.append("| %s | %s | %s | %s | %s | %s | %s | %s |" % (
             os.path.basename(model), *("%.2f" % x["wall_s"] if x.get("wall_s") else "-" for x in (g, a, c)),
             ratio(a.get("wall_s"), g.get("wall_s")), ratio(a.get("wall_s"), c.get("wall_s")),
-            g.get("patches"), g.get("sheets"), a.get("patches"), a.get("sheets")))
+            design_cell(g), design_cell(a)))
     return "\n".join(lines)
 
 
@@ -64,7 +81,11 @@ def main():
     ap.add_argument("--repeat", type=int, default=3)
     ap.add_argument("--cli", default=os.path.join(ROOT, "build", "App", "cli", "sliceform"))
     ap.add_argument("--out", help="also write the rows as JSON here")
-    args = ap.parse_args()
+    argv = sys.argv[1:]
+    if "--" in argv:
+        OPTIONS.extend(argv[argv.index("--") + 1:])
+        argv = argv[:argv.index("--")]
+    args = ap.parse_args(argv)
     rows = {}
     with tempfile.TemporaryDirectory() as tmp:
         for m in args.models:
