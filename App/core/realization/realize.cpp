@@ -126,8 +126,22 @@ class Search {
     for (int p = 0; p < n_; ++p) state_[p] = first[p];
     for (int p = 0; p < n_; ++p)
       if (in.patches[p].family == Family::U) refreshLocks(p);
-    meets_.resize(in.hinges.size());
-    for (size_t h = 0; h < meets_.size(); ++h) meets_[h] = meets(static_cast<int>(h));
+    // The pairs with a holding hinge, in order, and how many of those meet: score() reads
+    // the pairs left with none from the counts, not from the hinges at every move.
+    pairOf_.assign(in.hinges.size(), -1);
+    for (const ScaffoldHinge& hinge : in.hinges)
+      if (hinge.holds) pairs_.emplace_back(hinge.u, hinge.v);
+    std::sort(pairs_.begin(), pairs_.end());
+    pairs_.erase(std::unique(pairs_.begin(), pairs_.end()), pairs_.end());
+    for (size_t h = 0; h < in.hinges.size(); ++h)
+      if (in.hinges[h].holds)
+        pairOf_[h] = static_cast<int>(
+            std::lower_bound(pairs_.begin(), pairs_.end(), std::pair{in.hinges[h].u, in.hinges[h].v}) -
+            pairs_.begin());
+    met_.assign(pairs_.size(), 0);
+    lost_ = static_cast<int>(pairs_.size());
+    meets_.assign(in.hinges.size(), 0);
+    for (size_t h = 0; h < meets_.size(); ++h) setMeets(static_cast<int>(h), meets(static_cast<int>(h)));
   }
 
   void run() {
@@ -280,9 +294,23 @@ class Search {
     for (int q = 0; q < n_; ++q) {
       if (in_.patches[q].family == in_.patches[p].family) continue;
       const int a = isU ? p : q, b = isU ? q : p;
-      locks_[static_cast<size_t>(a) * n_ + b] =
-          interlockCount(state_[a]->holes, in_.frames.u, state_[b]->holes, in_.frames.v);
+      int& lock = locks_[static_cast<size_t>(a) * n_ + b];
+      const int now = interlockCount(state_[a]->holes, in_.frames.u, state_[b]->holes, in_.frames.v);
+      lockTotal_ += now - lock;
+      lock = now;
     }
+  }
+
+  // meets_[h] = m, the counts of meeting holding hinges per pair kept with it.
+  void setMeets(int h, bool m) {
+    if (meets_[h] == m) return;
+    meets_[h] = m;
+    const int pair = pairOf_[h];
+    if (pair < 0) return;
+    const int before = met_[pair];
+    met_[pair] += m ? 1 : -1;
+    if (before == 0) --lost_;
+    if (met_[pair] == 0) ++lost_;
   }
 
   // Whether the slotted patches of hinge h still meet along it: with both slots pointing the
@@ -298,16 +326,9 @@ class Search {
 
   // Pairs that had a holding hinge and have none left whose patches meet.
   std::set<std::pair<int, int>> lostPins() const {
-    std::set<std::pair<int, int>> had, kept;
-    for (size_t h = 0; h < in_.hinges.size(); ++h) {
-      const ScaffoldHinge& hinge = in_.hinges[h];
-      if (!hinge.holds) continue;
-      had.insert({hinge.u, hinge.v});
-      if (meets_[h]) kept.insert({hinge.u, hinge.v});
-    }
     std::set<std::pair<int, int>> lost;
-    for (const auto& pair : had)
-      if (!kept.count(pair)) lost.insert(pair);
+    for (size_t k = 0; k < pairs_.size(); ++k)
+      if (met_[k] == 0) lost.insert(lost.end(), pairs_[k]);
     return lost;
   }
 
@@ -317,8 +338,8 @@ class Search {
       s.broken += state_[p]->pieces > 1 ? 1 : 0;
       s.extraPieces += std::max(0, state_[p]->pieces - 1);
     }
-    s.broken += static_cast<int>(lostPins().size());
-    for (const int l : locks_) s.interlocks += l;
+    s.broken += lost_;
+    s.interlocks = lockTotal_;
     for (const SlotPair x : slots_) s.cutThroughs += isUpDown(x) ? 0 : 1;
     return s;
   }
@@ -358,7 +379,10 @@ class Search {
   Score apply(const Move& move) {
     saved_.clear();
     savedLocks_ = locks_;
+    savedLockTotal_ = lockTotal_;
     savedMeets_ = meets_;
+    savedMet_ = met_;
+    savedLost_ = lost_;
     std::set<int> touched;
     for (const auto& [h, pair] : move) {
       saved_.push_back({h, slots_[h]});
@@ -373,7 +397,7 @@ class Search {
     }
     for (const int p : touched) {
       refreshLocks(p);
-      for (const int h : hingesOf_[p]) meets_[h] = meets(h);  // only these can change
+      for (const int h : hingesOf_[p]) setMeets(h, meets(h));  // only these can change
     }
     return score();
   }
@@ -382,7 +406,10 @@ class Search {
     for (const auto& [h, pair] : saved_) slots_[h] = pair;
     for (auto& s : savedPatches_) state_[s.patch] = std::move(s.state);
     locks_ = savedLocks_;
+    lockTotal_ = savedLockTotal_;
     meets_ = savedMeets_;
+    met_ = savedMet_;
+    lost_ = savedLost_;
   }
 
   // Whether hinge h may be cut through: not the last holding up/down hinge of its pair.
@@ -584,12 +611,17 @@ class Search {
   // a move since changed (occ/Top.brep: three split patches, 870 states a try, tried again
   // after every accepted move; the search ran out of its 60 s with 38 patches in pieces).
   BoundedCache<PatchKey, PatchState> cache_{kCacheBytes};
-  std::vector<int> locks_;  // interlocked hole pairs, [U-patch * n + V-patch]
+  std::vector<int> locks_;                  // interlocked hole pairs, [U-patch * n + V-patch]
+  int lockTotal_ = 0, savedLockTotal_ = 0;  // their sum
   int found_ = 0;
   std::vector<std::pair<int, SlotPair>> saved_;
   std::vector<SavedPatch> savedPatches_;
   std::vector<int> savedLocks_;
-  std::vector<char> meets_, savedMeets_;                  // per hinge: meets(h), kept up to date by apply()
+  std::vector<char> meets_, savedMeets_;    // per hinge: meets(h), kept up to date by apply() (setMeets)
+  std::vector<std::pair<int, int>> pairs_;  // the (U, V) pairs with a holding hinge, sorted
+  std::vector<int> pairOf_;                 // per hinge: its pair in pairs_, -1 if it does not hold
+  std::vector<int> met_, savedMet_;         // per pair: its holding hinges that meet
+  int lost_ = 0, savedLost_ = 0;            // pairs with none (lostPins().size())
   std::vector<long> version_ = std::vector<long>(n_, 0);  // per patch: accepted moves that changed it
 };
 
