@@ -19,13 +19,13 @@ import tempfile
 import run
 
 ROOT = run.ROOT
-OPTIONS = []  # given after --, for every design
 
 
 def one(cli, model, extra, tmp):
+    """One design; `extra` holds the options after `--` and the frame's."""
     out = os.path.join(tmp, "design")
     shutil.rmtree(out, ignore_errors=True)
-    r = run.timed([cli, "design", model, "--size", "150", "-o", out] + OPTIONS + extra, tmp)
+    r = run.timed([cli, "design", model, "--size", "150", "-o", out] + extra, tmp)
     report = os.path.join(out, "report.json")
     if r["rc"] not in (0, 1) or not os.path.exists(report):
         return {"wall_s": None, "error": r["error"] or "exit %d" % r["rc"]}
@@ -39,15 +39,15 @@ def one(cli, model, extra, tmp):
             "silhouette_iou": sum(silhouette) / 3 if None not in silhouette else None}
 
 
-def bench(cli, model, repeat, tmp):
+def bench(cli, model, repeat, options, tmp):
     row = {}
     for name, extra in (("given", ["--directions", "given"]), ("auto", ["--directions", "auto"])):
-        runs = [one(cli, model, extra, tmp) for _ in range(repeat)]
+        runs = [one(cli, model, options + extra, tmp) for _ in range(repeat)]
         row[name] = dict(runs[0], wall_s=run.median(r["wall_s"] for r in runs))
     a = row["auto"]
     if a.get("u"):
         frame = ["--u", ",".join(repr(x) for x in a["u"]), "--v", ",".join(repr(x) for x in a["v"])]
-        runs = [one(cli, model, frame, tmp) for _ in range(repeat)]
+        runs = [one(cli, model, options + frame, tmp) for _ in range(repeat)]
         row["chosen"] = dict(runs[0], wall_s=run.median(r["wall_s"] for r in runs))
     return row
 
@@ -82,14 +82,12 @@ def main():
     ap.add_argument("--cli", default=os.path.join(ROOT, "build", "App", "cli", "sliceform"))
     ap.add_argument("--out", help="also write the rows as JSON here")
     argv = sys.argv[1:]
-    if "--" in argv:
-        OPTIONS.extend(argv[argv.index("--") + 1:])
-        argv = argv[:argv.index("--")]
-    args = ap.parse_args(argv)
+    options = argv[argv.index("--") + 1:] if "--" in argv else []  # for every design
+    args = ap.parse_args(argv[:argv.index("--")] if "--" in argv else argv)
     rows = {}
     with tempfile.TemporaryDirectory() as tmp:
         for m in args.models:
-            rows[m] = bench(args.cli, os.path.abspath(m), args.repeat, tmp)
+            rows[m] = bench(args.cli, os.path.abspath(m), args.repeat, options, tmp)
             print(os.path.basename(m), json.dumps({k: v.get("wall_s") for k, v in rows[m].items()}), file=sys.stderr)
     print(table(rows))
     if args.out:

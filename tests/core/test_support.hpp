@@ -109,10 +109,20 @@ inline TopoDS_Shape cut(const TopoDS_Shape& a, const TopoDS_Shape& b) {
   return op.Shape();
 }
 
+// Every edge and vertex of `shape` made to claim `tolerance` mm, in place, as some real
+// files' do (1-3 mm: occt-misc MODERN_Sink_1 has a circle claiming 3).
+inline void loosen(const TopoDS_Shape& shape, double tolerance) {
+  BRep_Builder builder;
+  for (TopExp_Explorer e(shape, TopAbs_EDGE); e.More(); e.Next())
+    builder.UpdateEdge(TopoDS::Edge(e.Current()), tolerance);
+  for (TopExp_Explorer v(shape, TopAbs_VERTEX); v.More(); v.Next())
+    builder.UpdateVertex(TopoDS::Vertex(v.Current()), tolerance);
+}
+
 // A loft through a circle, an ellipse and a smaller circle (its side one B-spline face),
 // bored across: free-form faces the face-by-face route hands to OCCT's section one by one.
-// With `looseness`, every edge and vertex claims that many mm of tolerance, as some real
-// files do (1-3 mm), and OCCT's sections of it are often wrong: a face's boundary circle for
+// With `looseness`, every edge and vertex claims that many mm of tolerance (loosen), and
+// OCCT's sections of it are often wrong: a face's boundary circle for
 // its section, a plane read as missing the solid, faces larger than the solid's section.
 inline TopoDS_Shape boredLoft(double looseness = 0) {
   BRepOffsetAPI_ThruSections loft(Standard_True, Standard_False);
@@ -124,13 +134,7 @@ inline TopoDS_Shape boredLoft(double looseness = 0) {
   loft.Build();
   const TopoDS_Shape shape = cut(
       loft.Shape(), BRepPrimAPI_MakeCylinder(gp_Ax2(gp_Pnt(0, -20, 9), gp_Dir(0, 1, 0)), 2.5, 40).Shape());
-  if (looseness > 0) {
-    BRep_Builder builder;
-    for (TopExp_Explorer e(shape, TopAbs_EDGE); e.More(); e.Next())
-      builder.UpdateEdge(TopoDS::Edge(e.Current()), looseness);
-    for (TopExp_Explorer v(shape, TopAbs_VERTEX); v.More(); v.Next())
-      builder.UpdateVertex(TopoDS::Vertex(v.Current()), looseness);
-  }
+  if (looseness > 0) loosen(shape, looseness);
   return shape;
 }
 
