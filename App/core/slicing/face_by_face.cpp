@@ -373,31 +373,17 @@ std::vector<std::optional<std::vector<FaceByFace::AloneEdge>>> cutAlone(const To
   }
   const TopoDS_Shape section = sectionCurves(face, squares, true);
   if (section.IsNull()) return out;
-  for (auto& edges : out) edges.emplace();
-  std::vector<bool> unsure(d.size(), false);
-  for (TopExp_Explorer it(section, TopAbs_EDGE); it.More(); it.Next()) {
-    FaceByFace::AloneEdge e{TopoDS::Edge(it.Current()), {}, {}};
-    TopExp::Vertices(e.edge, e.first, e.last);  // FORWARD at the first parameter
-    double first = 0, last = 0;
-    const Handle(Geom_Curve) curve = BRep_Tool::Curve(e.edge, first, last);
-    if (e.first.IsNull() || e.last.IsNull() || curve.IsNull()) return decltype(out)(d.size());
-    // Each edge to its plane, the nearest to its middle (planes lie a slice's spacing
-    // apart): an end may be a vertex of the solid that claims a loose tolerance. An edge
-    // with its middle or an end off that plane (kOffPlane) is not its section: OCCT took
-    // a loose edge of the face for it. Every plane within the edge's tolerance of it is
-    // then unsure: OCCT may have matched it to any of them.
-    const double p = n.XYZ().Dot(curve->Value((first + last) / 2).XYZ());
-    size_t nearest = 0;
-    for (size_t k = 1; k < d.size(); ++k)
-      if (std::abs(d[k] - p) < std::abs(d[nearest] - p)) nearest = k;
-    const auto off = [&](double t) { return std::abs(n.XYZ().Dot(curve->Value(t).XYZ()) - d[nearest]); };
-    if (std::abs(d[nearest] - p) > kOffPlane || off(first) > kOffPlane || off(last) > kOffPlane)
-      for (size_t k = 0; k < d.size(); ++k)
-        if (k == nearest || std::abs(d[k] - p) <= BRep_Tool::Tolerance(e.edge) + kOffPlane) unsure[k] = true;
-    out[nearest]->push_back(e);
+  const std::vector<std::optional<std::vector<TopoDS_Edge>>> byPlane = edgesByPlane(section, n, d);
+  for (size_t k = 0; k < d.size(); ++k) {
+    if (!byPlane[k]) continue;
+    out[k].emplace();
+    for (const TopoDS_Edge& edge : *byPlane[k]) {
+      FaceByFace::AloneEdge e{edge, {}, {}};
+      TopExp::Vertices(e.edge, e.first, e.last);  // FORWARD at the first parameter
+      if (e.first.IsNull() || e.last.IsNull()) return decltype(out)(d.size());
+      out[k]->push_back(e);
+    }
   }
-  for (size_t k = 0; k < d.size(); ++k)
-    if (unsure[k]) out[k].reset();
   return out;
 }
 
@@ -465,6 +451,33 @@ TopoDS_Shape sectionCurves(const TopoDS_Shape& shape, const TopoDS_Shape& cutter
   section.Build();
   if (!section.IsDone() || section.HasErrors() || (strict && section.HasWarnings())) return {};
   return section.Shape();
+}
+
+std::vector<std::optional<std::vector<TopoDS_Edge>>> edgesByPlane(const TopoDS_Shape& section,
+                                                                  const gp_Dir& n,
+                                                                  const std::vector<double>& d) {
+  std::vector<std::optional<std::vector<TopoDS_Edge>>> out(d.size());
+  if (d.empty()) return out;
+  for (auto& edges : out) edges.emplace();
+  std::vector<bool> unsure(d.size(), false);
+  for (TopExp_Explorer it(section, TopAbs_EDGE); it.More(); it.Next()) {
+    const TopoDS_Edge& edge = TopoDS::Edge(it.Current());
+    double first = 0, last = 0;
+    const Handle(Geom_Curve) curve = BRep_Tool::Curve(edge, first, last);
+    if (curve.IsNull()) return decltype(out)(d.size());
+    const double p = n.XYZ().Dot(curve->Value((first + last) / 2).XYZ());
+    size_t nearest = 0;
+    for (size_t k = 1; k < d.size(); ++k)
+      if (std::abs(d[k] - p) < std::abs(d[nearest] - p)) nearest = k;
+    const auto off = [&](double t) { return std::abs(n.XYZ().Dot(curve->Value(t).XYZ()) - d[nearest]); };
+    if (std::abs(d[nearest] - p) > kOffPlane || off(first) > kOffPlane || off(last) > kOffPlane)
+      for (size_t k = 0; k < d.size(); ++k)
+        if (k == nearest || std::abs(d[k] - p) <= BRep_Tool::Tolerance(edge) + kOffPlane) unsure[k] = true;
+    out[nearest]->push_back(edge);
+  }
+  for (size_t k = 0; k < d.size(); ++k)
+    if (unsure[k]) out[k].reset();
+  return out;
 }
 
 FaceByFace::FaceByFace(const TopoDS_Shape& solid, const gp_Dir& normal) : normal_(normal) {

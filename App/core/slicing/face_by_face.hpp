@@ -37,6 +37,17 @@ namespace sliceform {
 // shape where OCCT reports an error, or with `strict` also a warning.
 TopoDS_Shape sectionCurves(const TopoDS_Shape& shape, const TopoDS_Shape& cutters, bool strict);
 
+// The edges of OCCT's section by the planes at `d` along `n` (sectionCurves), each on the
+// plane nearest its middle (planes lie a slice's spacing apart; an end may be a vertex of
+// the solid that claims a loose tolerance). Per plane its edges, nullopt where unsure: an
+// edge with its middle or an end more than 10 µm off its plane is not a section (OCCT took
+// a loose edge of the solid for one, test::boredLoft), and every plane within the edge's
+// tolerance of it is unsure, as OCCT may have matched it to any of them. All nullopt where
+// an edge has no curve.
+std::vector<std::optional<std::vector<TopoDS_Edge>>> edgesByPlane(const TopoDS_Shape& section,
+                                                                  const gp_Dir& n,
+                                                                  const std::vector<double>& d);
+
 class FaceByFace {
  public:
   // `solid`'s faces and edges, with where each lies along `normal`, the normal of every

@@ -175,23 +175,22 @@ std::vector<std::optional<SectionFaces>> sectionFaces(const TopoDS_Shape& solid,
   // A warning here (a too small edge) still leaves curves the checks below take or refuse.
   const TopoDS_Shape section = sectionCurves(solid, cutters, false);
   if (section.IsNull()) return out;
-  // Each edge to its plane, by one of its vertices.
+  // Each edge to its plane; a plane with an edge off it is left to the Common.
+  std::vector<double> at;
+  for (const size_t k : rest) at.push_back(positions[k]);
+  const std::vector<std::optional<std::vector<TopoDS_Edge>>> curves =
+      edgesByPlane(section, toDir(frame.normal), at);
   std::vector<Handle(TopTools_HSequenceOfShape)> edges(rest.size());
-  for (auto& e : edges) e = new TopTools_HSequenceOfShape;
-  for (TopExp_Explorer it(section, TopAbs_EDGE); it.More(); it.Next()) {
-    const TopExp_Explorer vertex(it.Current(), TopAbs_VERTEX);
-    if (!vertex.More()) return out;
-    const gp_Pnt at = BRep_Tool::Pnt(TopoDS::Vertex(vertex.Current()));
-    const double p = frame.position({at.X(), at.Y(), at.Z()});
-    size_t nearest = 0;
-    for (size_t i = 1; i < rest.size(); ++i)
-      if (std::abs(positions[rest[i]] - p) < std::abs(positions[rest[nearest]] - p)) nearest = i;
-    edges[nearest]->Append(it.Current());
-  }
+  for (size_t i = 0; i < rest.size(); ++i)
+    if (curves[i]) {
+      edges[i] = new TopTools_HSequenceOfShape;
+      for (const TopoDS_Edge& e : *curves[i]) edges[i]->Append(e);
+    }
   for (size_t i = 0; i < rest.size(); ++i) {
     std::vector<Loop> loops;
     TopoDS_Compound faces;
     builder.MakeCompound(faces);
+    if (edges[i].IsNull()) continue;  // unsure: the Common
     if (edges[i]->IsEmpty())
       out[rest[i]] = SectionFaces{TopoDS_Shape(), SectionRoute::Curves};
     else if (loopsOf(edges[i], frame, deflection, loops) && facesOf(loops, planes[rest[i]], builder, faces))
