@@ -119,12 +119,9 @@ inline void loosen(const TopoDS_Shape& shape, double tolerance) {
     builder.UpdateVertex(TopoDS::Vertex(v.Current()), tolerance);
 }
 
-// A loft through a circle, an ellipse and a smaller circle (its side one B-spline face),
-// bored across: free-form faces the face-by-face route hands to OCCT's section one by one.
-// With `looseness`, every edge and vertex claims that many mm of tolerance (loosen), and
-// OCCT's sections of it are often wrong: a face's boundary circle for
-// its section, a plane read as missing the solid, faces larger than the solid's section.
-inline TopoDS_Shape boredLoft(double looseness = 0) {
+// A loft through a circle, an ellipse and a smaller circle: its side is one B-spline face,
+// bounded by its parameter box, which the face-by-face route traces (slicing/traced_section.hpp).
+inline TopoDS_Shape loft() {
   BRepOffsetAPI_ThruSections loft(Standard_True, Standard_False);
   const auto wire = [](const TopoDS_Edge& e) { return BRepBuilderAPI_MakeWire(e).Wire(); };
   loft.AddWire(wire(BRepBuilderAPI_MakeEdge(gp_Circ(gp_Ax2(gp_Pnt(0, 0, 0), gp_Dir(0, 0, 1)), 10)).Edge()));
@@ -132,8 +129,16 @@ inline TopoDS_Shape boredLoft(double looseness = 0) {
       wire(BRepBuilderAPI_MakeEdge(gp_Elips(gp_Ax2(gp_Pnt(1, 0, 10), gp_Dir(0, 0, 1)), 12, 7)).Edge()));
   loft.AddWire(wire(BRepBuilderAPI_MakeEdge(gp_Circ(gp_Ax2(gp_Pnt(0, 0, 20), gp_Dir(0, 0, 1)), 6)).Edge()));
   loft.Build();
-  const TopoDS_Shape shape = cut(
-      loft.Shape(), BRepPrimAPI_MakeCylinder(gp_Ax2(gp_Pnt(0, -20, 9), gp_Dir(0, 1, 0)), 2.5, 40).Shape());
+  return loft.Shape();
+}
+
+// The loft bored across: its side face has holes, and the face-by-face route hands it to
+// OCCT's section. With `looseness`, every edge and vertex claims that many mm of tolerance
+// (loosen), and OCCT's sections of it are often wrong: a face's boundary circle for its
+// section, a plane read as missing the solid, faces larger than the solid's section.
+inline TopoDS_Shape boredLoft(double looseness = 0) {
+  const TopoDS_Shape shape =
+      cut(loft(), BRepPrimAPI_MakeCylinder(gp_Ax2(gp_Pnt(0, -20, 9), gp_Dir(0, 1, 0)), 2.5, 40).Shape());
   if (looseness > 0) loosen(shape, looseness);
   return shape;
 }

@@ -37,6 +37,8 @@
 #include <tuple>
 
 #include "slicing/torus_section.hpp"
+#include "slicing/traced_section.hpp"
+#include "support/parallel.hpp"
 
 namespace sliceform {
 namespace {
@@ -189,9 +191,9 @@ bool surfaceCurves(const BRepAdaptor_Surface& s, const gp_Pln& plane, const Bnd_
     }
     return true;
   }
-  // B-splines, surfaces of revolution, tori cut aslant: not here (cutAlone). Walking them
-  // with GeomInt_IntSS was tried: as fast as the section's own walk, but its curves made
-  // exact patches break rules their polygons keep (occt-misc Bottom.brep: 9 patches emitted
+  // B-splines, surfaces of revolution, tori cut aslant: not here (traced, or cutAlone).
+  // Walking them with GeomInt_IntSS was tried: as fast as the section's own walk, but its
+  // curves made exact patches break rules their polygons keep (occt-misc Bottom.brep: 9 patches emitted
   // as polygons instead of 3; MODERN_Sink_1: 9 instead of 2).
   if (s.GetType() > GeomAbs_Torus || !q.IsDone() || q.TypeInter() == IntAna_NoGeometricSolution) return false;
   const IntAna_ResultType type = q.TypeInter();
@@ -503,6 +505,16 @@ FaceByFace::FaceByFace(const TopoDS_Shape& solid, const gp_Dir& normal) : normal
     }
     faces_.push_back(std::move(f));
   }
+  parallelFor(faces_.size(), [&](size_t i) {
+    Face& f = faces_[i];
+    if (f.solved) return;
+    try {
+      f.traced = std::make_shared<const TracedFace>(f.face, normal);
+      if (f.traced->empty()) f.traced.reset();
+    } catch (const Standard_Failure&) {
+      f.traced.reset();  // OCCT's walk cuts it
+    }
+  });
 }
 
 std::vector<Handle(TopTools_HSequenceOfShape)> FaceByFace::edges(const std::vector<gp_Pln>& planes) const {
@@ -525,13 +537,23 @@ std::vector<Handle(TopTools_HSequenceOfShape)> FaceByFace::edges(const std::vect
         return std::vector<std::optional<std::vector<AloneEdge>>>(at.size());  // each plane unsure
       }
     };
-    std::vector<std::optional<std::vector<AloneEdge>>> cuts = cut(reach);
+    // Traced where the trace is sure, by OCCT at the planes left.
+    std::vector<std::optional<std::vector<AloneEdge>>> cuts(reach.size());
+    std::vector<size_t> left;
+    for (size_t r = 0; r < reach.size(); ++r) {
+      if (f.traced) cuts[r] = f.traced->cut(reach[r]);
+      if (!cuts[r]) left.push_back(r);
+    }
+    std::vector<double> at;
+    for (const size_t r : left) at.push_back(reach[r]);
+    std::vector<std::optional<std::vector<AloneEdge>>> byOcct = at.empty() ? decltype(cuts)() : cut(at);
     // OCCT's doubt about one plane (a warning: a too small edge) is about all of the
     // Boolean's: where it doubts, each plane is cut alone again. (One plane unsure of its
     // own edges, cutAlone's check, leaves the others as they are.)
-    if (reach.size() > 1 &&
-        std::none_of(cuts.begin(), cuts.end(), [](const auto& c) { return c.has_value(); }))
-      for (size_t r = 0; r < reach.size(); ++r) cuts[r] = std::move(cut({reach[r]}).front());
+    if (at.size() > 1 &&
+        std::none_of(byOcct.begin(), byOcct.end(), [](const auto& c) { return c.has_value(); }))
+      for (size_t r = 0; r < at.size(); ++r) byOcct[r] = std::move(cut({at[r]}).front());
+    for (size_t k = 0; k < left.size(); ++k) cuts[left[k]] = std::move(byOcct[k]);
     alone[i].resize(d.size());
     for (size_t k = 0, r = 0; k < d.size(); ++k)
       if (d[k] >= f.lo && d[k] <= f.hi) alone[i][k] = std::move(cuts[r++]);

@@ -8,13 +8,14 @@
 // and the pieces inside the face are kept. Pieces of two faces meet at the one vertex made
 // for each crossing of their shared edge, so the edges chain into loops by shared vertices.
 //
-// A face of another kind (B-spline, surface of revolution, a torus cut aslant) is cut by
-// BRepAlgoAPI_Section of that face alone with the plane, its curves ending at the same
-// crossing vertices. The route answers nothing where it would have to guess or cannot
-// solve, and the caller then asks BRepAlgoAPI_Section of the whole solid: a face on the
-// plane, the plane through a vertex of the solid or tangent to a face, a crossing on none
-// of a face's curves, a piece on a face's boundary, an end of another face's section at
-// no crossing.
+// A face of another kind (B-spline, surface of revolution, a torus cut aslant) is traced on
+// its parameters where it is bounded by their box (slicing/traced_section.hpp), else, and
+// where the trace is unsure, cut by BRepAlgoAPI_Section of that face alone with the plane;
+// either way its curves end at the same crossing vertices. The route answers nothing where
+// it would have to guess or cannot solve, and the caller then asks BRepAlgoAPI_Section of
+// the whole solid: a face on the plane, the plane through a vertex of the solid or tangent
+// to a face, a crossing on none of a face's curves, a piece on a face's boundary, an end of
+// another face's section at no crossing.
 #pragma once
 
 #include <Bnd_Box.hxx>
@@ -26,10 +27,13 @@
 #include <gp_Dir.hxx>
 #include <gp_Pln.hxx>
 
+#include <memory>
 #include <optional>
 #include <vector>
 
 namespace sliceform {
+
+class TracedFace;
 
 // OCCT's section curves of `shape` by the faces of `cutters` (BRepAlgoAPI_Section), as both
 // routes that ask OCCT want them: the walking lines approximated with their curves on
@@ -75,9 +79,11 @@ class FaceByFace {
     TopoDS_Face face;
     Bnd_Box box;
     double lo, hi;
-    double uv[4];            // its parameter box: u min, u max, v min, v max
-    std::vector<int> edges;  // indices into edges_, each once (a seam too)
-    bool solved;             // whether this route cuts it itself (solvedBy), else cutAlone
+    double uv[4];                              // its parameter box: u min, u max, v min, v max
+    std::vector<int> edges;                    // indices into edges_, each once (a seam too)
+    bool solved;                               // whether this route cuts it itself (solvedBy), else cutAlone
+    std::shared_ptr<const TracedFace> traced;  // of a face not solved: its sections traced,
+                                               // null where they cannot be (cutAlone only)
   };
   // Per face and plane, the edges of a face cut alone (nullopt where OCCT was unsure or an
   // edge lies off its plane; empty for the faces this route solves).
