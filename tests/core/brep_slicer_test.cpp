@@ -273,8 +273,8 @@ TEST(BrepSlicer, PlaneMissingTheSolidGivesNothing) {
 // along the outline. The cases reach every kind of curve the face-by-face route makes:
 // lines, circles, ellipses (cylinders across), a cone's hyperbolas, a torus cut along its
 // axis in one loop and in two (interpolated: slicing/torus_section.hpp), and a B-spline
-// face's and a torus's cut aslant traced contours (slicing/traced_section.hpp); a B-spline
-// face with holes goes to OCCT's section of that face alone.
+// face's (with holes too) and a torus's cut aslant traced contours
+// (slicing/traced_section.hpp).
 TEST(BrepSlicer, SectionRoutesMakeTheFacesOfSolidsWithHoles) {
   const double d = 0.01;
   struct Case {
@@ -283,18 +283,19 @@ TEST(BrepSlicer, SectionRoutesMakeTheFacesOfSolidsWithHoles) {
     Vec3 normal;
     double within = 0;  // mm its curves may be from the exact ones (a torus's loops: 1 µm)
     bool nests = true;  // holes or outlines side by side on some plane
-  } cases[] = {{"holed box along the holes", holedBox(), {0, 0, 1}},
-               {"holed box across", holedBox(), {1, 0.2, 0}},
-               {"hollow sphere", test::makeHollowSphere(10, 6), {0, 1, 1}},
-               {"torus across its axis", test::makeTorus(10, 3), {0, 0, 1}},
-               {"torus along its axis", test::makeTorus(10, 3), {1, 0, 0}, 1e-3},
-               // traced (slicing/traced_section.hpp), within 1 µm
-               {"torus aslant", test::makeTorus(10, 3), {1, 0, 1}, 1e-3},
-               {"cone with a bore, along its axis", coneWithBore(), {1, 0, 0}},
-               {"loft (a B-spline face, traced), across", test::loft(), {1, 0, 0}, 1e-3, false},
-               {"loft, aslant", test::loft(), {1, 0, 0.5}, 1e-3, false},
-               {"bored loft (a B-spline face with holes), across", test::boredLoft(), {1, 0, 0}},
-               {"bored loft, aslant", test::boredLoft(), {1, 0, 0.5}}};
+  } cases[] = {
+      {"holed box along the holes", holedBox(), {0, 0, 1}},
+      {"holed box across", holedBox(), {1, 0.2, 0}},
+      {"hollow sphere", test::makeHollowSphere(10, 6), {0, 1, 1}},
+      {"torus across its axis", test::makeTorus(10, 3), {0, 0, 1}},
+      {"torus along its axis", test::makeTorus(10, 3), {1, 0, 0}, 1e-3},
+      // traced (slicing/traced_section.hpp), within 1 µm
+      {"torus aslant", test::makeTorus(10, 3), {1, 0, 1}, 1e-3},
+      {"cone with a bore, along its axis", coneWithBore(), {1, 0, 0}},
+      {"loft (a B-spline face, traced), across", test::loft(), {1, 0, 0}, 1e-3, false},
+      {"loft, aslant", test::loft(), {1, 0, 0.5}, 1e-3, false},
+      {"bored loft (a B-spline face with holes, traced), across", test::boredLoft(), {1, 0, 0}, 1e-3},
+      {"bored loft, aslant", test::boredLoft(), {1, 0, 0.5}, 1e-3}};
   for (const Case& c : cases) {
     SCOPED_TRACE(c.name);
     const Model model = modelFromShape(c.shape, c.name, d);

@@ -9,9 +9,9 @@
 // for each crossing of their shared edge, so the edges chain into loops by shared vertices.
 //
 // A face of another kind (B-spline, surface of revolution, a torus cut aslant) is traced on
-// its parameters where it is bounded by their box (slicing/traced_section.hpp), else, and
-// where the trace is unsure, cut by BRepAlgoAPI_Section of that face alone with the plane;
-// either way its curves end at the same crossing vertices. The route answers nothing where
+// its parameters (slicing/traced_section.hpp), and where the trace is unsure, cut by
+// BRepAlgoAPI_Section of that face alone with the plane; either way its curves end at the
+// same crossing vertices. The route answers nothing where
 // it would have to guess or cannot solve, and the caller then asks BRepAlgoAPI_Section of
 // the whole solid: a face on the plane, the plane through a vertex of the solid or tangent
 // to a face, a crossing on none of a face's curves, a piece on a face's boundary, an end of

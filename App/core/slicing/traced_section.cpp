@@ -5,6 +5,7 @@
 #include <BRepTools.hxx>
 #include <BRep_Builder.hxx>
 #include <BRep_Tool.hxx>
+#include <Geom2dAdaptor_Curve.hxx>
 #include <Geom2d_Curve.hxx>
 #include <GeomAPI_Interpolate.hxx>
 #include <Geom_BSplineCurve.hxx>
@@ -55,6 +56,17 @@ std::vector<double> gridParameters(const TColStd_Array1OfReal& breaks, double lo
   return out;
 }
 
+// The cells [grid[k], grid[k + 1]] that meet [lo, hi], first and last: a side on the
+// grid's last line lies in its last cell.
+std::pair<int, int> cellsMeeting(const std::vector<double>& grid, double lo, double hi) {
+  const int cells = static_cast<int>(grid.size()) - 1;
+  const auto cell = [&](double x) {
+    return std::clamp(static_cast<int>(std::upper_bound(grid.begin(), grid.end(), x) - grid.begin()) - 1, 0,
+                      cells - 1);
+  };
+  return {cell(std::min(lo, hi)), cell(std::max(lo, hi))};
+}
+
 // Whether every edge of the face lies on the border of its parameter box, in one wire.
 bool boundedByBox(const TopoDS_Face& face, double u0, double u1, double v0, double v1) {
   int wires = 0;
@@ -75,9 +87,44 @@ bool boundedByBox(const TopoDS_Face& face, double u0, double u1, double v0, doub
   return true;
 }
 
-// A cubic B-spline through some of `points` (at their chord-length `params`; a closed
-// contour's one more, its length) with all of them within kTolerance / 2, and its largest
-// distance from them; null where none fits.
+// The point of the surface nearest `q`, from near `uv` (Newton's method on the distance),
+// and its parameters.
+gp_Pnt nearest(const BRepAdaptor_Surface& s, const gp_Pnt& q, gp_Pnt2d& uv) {
+  gp_Pnt p;
+  gp_Vec su, sv;
+  for (int k = 0; k < 6; ++k) {
+    s.D1(uv.X(), uv.Y(), p, su, sv);
+    const gp_Vec r(q, p);
+    const double a = su.Dot(su), b = su.Dot(sv), c = sv.Dot(sv), det = a * c - b * b;
+    if (!(det > 0)) break;
+    const double du = -(c * su.Dot(r) - b * sv.Dot(r)) / det, dv = -(a * sv.Dot(r) - b * su.Dot(r)) / det;
+    uv.SetCoord(uv.X() + du, uv.Y() + dv);
+    if (std::abs(du) + std::abs(dv) < 1e-14) break;
+  }
+  return s.Value(uv.X(), uv.Y());
+}
+
+// A point on the face and the plane n·p = d, from near `uv` (Newton's method along the
+// height's gradient); nullopt where it does not get there.
+std::optional<gp_Pnt> onPlane(const BRepAdaptor_Surface& s, const gp_Dir& n, double d, gp_Pnt2d& uv) {
+  gp_Pnt p;
+  gp_Vec su, sv;
+  for (int k = 0; k < 8; ++k) {
+    s.D1(uv.X(), uv.Y(), p, su, sv);
+    const double g = n.XYZ().Dot(p.XYZ()) - d, gu = n.XYZ().Dot(su.XYZ()), gv = n.XYZ().Dot(sv.XYZ());
+    if (std::abs(g) <= 0.1 * kOnPlane) return p;
+    const double slope = gu * gu + gv * gv;
+    if (!(slope > 0)) return std::nullopt;
+    uv.SetCoord(uv.X() - g * gu / slope, uv.Y() - g * gv / slope);
+  }
+  p = s.Value(uv.X(), uv.Y());
+  if (std::abs(n.XYZ().Dot(p.XYZ()) - d) > kOnPlane) return std::nullopt;
+  return p;
+}
+
+// A cubic B-spline through some of the contour's points, at their chord-length
+// parameters, with every point within kTolerance / 2, and its largest distance from them.
+// Null where none fits.
 std::pair<Handle(Geom_BSplineCurve), double> fit(const std::vector<gp_Pnt>& points,
                                                  const std::vector<double>& params, bool closed) {
   const int m = static_cast<int>(points.size());
@@ -112,8 +159,86 @@ std::pair<Handle(Geom_BSplineCurve), double> fit(const std::vector<gp_Pnt>& poin
       error = std::max(error, curve->Value(s).Distance(points[i]));
     }
     if (error <= kTolerance / 2) return {curve, error};
-    if (count == m || m > kMost) return {nullptr, 0};
+    if (count == m || count >= kMost) return {nullptr, 0};
   }
+}
+
+// The edge along a piece of a contour (a closed contour's ends one vertex); nullopt where
+// none fits. Between its points the B-spline may bulge off the face (1.4 µm next to a
+// hole's rim, with points 1/20 apart): its middle between each two points is measured
+// against the face, and where it strays, the exact point there is added and it is fitted
+// again. The edge claims twice the largest distance found.
+std::optional<FaceByFace::AloneEdge> edgeThrough(const std::vector<gp_Pnt>& points,
+                                                 const std::vector<gp_Pnt2d>& uvs, bool closed,
+                                                 const BRepAdaptor_Surface& s, const gp_Dir& n, double d) {
+  std::vector<gp_Pnt> kept;
+  std::vector<gp_Pnt2d> uv;
+  for (size_t k = 0; k < points.size(); ++k)
+    if (kept.empty() || kept.back().Distance(points[k]) > kSame)
+      kept.push_back(points[k]), uv.push_back(uvs[k]);
+  if (closed && kept.size() > 1 && kept.back().Distance(kept.front()) <= kSame)
+    kept.pop_back(), uv.pop_back();
+  if (kept.size() < (closed ? 3u : 2u)) return std::nullopt;
+  for (int round = 0; round < 4; ++round) {
+    std::vector<double> params{0};
+    for (size_t k = 1; k < kept.size(); ++k) params.push_back(params.back() + kept[k - 1].Distance(kept[k]));
+    if (closed) params.push_back(params.back() + kept.back().Distance(kept.front()));
+    const auto [curve, error] = fit(kept, params, closed);
+    if (curve.IsNull() || kept.size() > size_t(kMost)) return std::nullopt;
+    double worst = error;
+    std::vector<gp_Pnt> more;
+    std::vector<gp_Pnt2d> moreUv;
+    const size_t pieces = closed ? kept.size() : kept.size() - 1;
+    for (size_t k = 0; k < kept.size(); ++k) {
+      more.push_back(kept[k]), moreUv.push_back(uv[k]);
+      if (k >= pieces) continue;
+      const size_t next = (k + 1) % kept.size();
+      const gp_Pnt q = curve->Value((params[k] + params[k + 1]) / 2);
+      gp_Pnt2d at((uv[k].XY() + uv[next].XY()) / 2);
+      const double off = nearest(s, q, at).Distance(q);
+      worst = std::max(worst, off);
+      if (off <= kTolerance / 2) continue;
+      const std::optional<gp_Pnt> exact = onPlane(s, n, d, at);
+      if (!exact) return std::nullopt;
+      more.push_back(*exact), moreUv.push_back(at);
+    }
+    if (more.size() == kept.size()) {
+      const double tolerance = std::max(2 * worst, Precision::Confusion());
+      BRep_Builder builder;
+      TopoDS_Vertex first, last;
+      builder.MakeVertex(first, kept.front(), tolerance);
+      last = first;
+      if (!closed) builder.MakeVertex(last, kept.back(), tolerance);
+      TopoDS_Edge edge;
+      builder.MakeEdge(edge, curve, tolerance);
+      builder.Add(edge, first.Oriented(TopAbs_FORWARD));
+      builder.Add(edge, last.Oriented(TopAbs_REVERSED));
+      builder.Range(edge, curve->FirstParameter(), curve->LastParameter());
+      return FaceByFace::AloneEdge{edge, first, last};
+    }
+    kept = std::move(more), uv = std::move(moreUv);
+  }
+  return std::nullopt;
+}
+
+// The root of g in [lo, hi] where it changes sign there (flo, fhi: g at the ends), by
+// Newton's method kept inside the bracket; nullopt where it does not change sign.
+template <class G>
+std::optional<double> root(const G& g, double lo, double hi, double flo, double fhi) {
+  if ((flo >= 0) == (fhi >= 0)) return std::nullopt;
+  double t = lo + (hi - lo) * flo / (flo - fhi);
+  for (int k = 0; k < 60; ++k) {
+    const auto [value, slope] = g(t);
+    if (std::abs(value) <= 0.1 * kOnPlane) return t;
+    if ((value >= 0) == (flo >= 0))
+      lo = t, flo = value;
+    else
+      hi = t, fhi = value;
+    const double next = t - value / slope;
+    t = slope != 0 && next > lo && next < hi ? next : (lo + hi) / 2;
+    if (hi - lo <= 1e-15 * (std::abs(lo) + std::abs(hi) + 1)) break;
+  }
+  return t;
 }
 
 }  // namespace
@@ -121,138 +246,161 @@ std::pair<Handle(Geom_BSplineCurve), double> fit(const std::vector<gp_Pnt>& poin
 TracedFace::TracedFace(const TopoDS_Face& face, const gp_Dir& n) : face_(face), n_(n) {
   double u0 = 0, u1 = 0, v0 = 0, v1 = 0;
   BRepTools::UVBounds(face, u0, u1, v0, v1);
-  if (!(u1 > u0 && v1 > v0) || Precision::IsInfinite(u1 - u0) || Precision::IsInfinite(v1 - v0) ||
-      !boundedByBox(face, u0, u1, v0, v1))
-    return;
+  if (!(u1 > u0 && v1 > v0) || Precision::IsInfinite(u1 - u0) || Precision::IsInfinite(v1 - v0)) return;
   const BRepAdaptor_Surface s(face, Standard_False);
   TColStd_Array1OfReal ub(1, s.NbUIntervals(GeomAbs_CN) + 1), vb(1, s.NbVIntervals(GeomAbs_CN) + 1);
   s.UIntervals(ub, GeomAbs_CN);
   s.VIntervals(vb, GeomAbs_CN);
   std::vector<double> u = gridParameters(ub, u0, u1), v = gridParameters(vb, v0, v1);
+  boxed_ = boundedByBox(face, u0, u1, v0, v1);
+  if (!boxed_) {
+    // Each edge's curve on the face as sides: 8 a span of it, 16 to 512 an edge.
+    const size_t cells = (u.size() - 1) * (v.size() - 1);
+    cellSides_.resize(cells);
+    for (TopExp_Explorer e(face, TopAbs_EDGE); e.More(); e.Next()) {
+      const TopoDS_Edge edge = TopoDS::Edge(e.Current());
+      double first = 0, last = 0;
+      const Handle(Geom2d_Curve) c = BRep_Tool::CurveOnSurface(edge, face, first, last);
+      if (c.IsNull()) return;
+      const Geom2dAdaptor_Curve curve(c, first, last);
+      const int count = std::clamp(8 * curve.NbIntervals(GeomAbs_CN), 16, 512);
+      const int index = static_cast<int>(edges_.size());
+      edges_.push_back(edge);
+      for (int k = 0; k < count; ++k) {
+        const double ta = first + (last - first) * k / count, tb = first + (last - first) * (k + 1) / count;
+        const Side side{c->Value(ta), c->Value(tb), index, ta, tb};
+        const auto [i0, i1] = cellsMeeting(u, side.a.X(), side.b.X());
+        const auto [j0, j1] = cellsMeeting(v, side.a.Y(), side.b.Y());
+        for (int j = j0; j <= j1; ++j)
+          for (int i = i0; i <= i1; ++i) cellSides_[j * (u.size() - 1) + i].push_back(int(sides_.size()));
+        sides_.push_back(side);
+      }
+    }
+  }
   h_.reserve(u.size() * v.size());
   for (const double b : v)
     for (const double a : u) h_.push_back(n.XYZ().Dot(s.Value(a, b).XYZ()));
   u_ = std::move(u), v_ = std::move(v);
 }
 
+std::optional<std::vector<TracedFace::Contour>> TracedFace::contours(double d) const {
+  const BRepAdaptor_Surface s(face_, Standard_False);
+  const int nu = static_cast<int>(u_.size()), nv = static_cast<int>(v_.size());
+  const auto f = [&](int i, int j) { return h_[static_cast<size_t>(j) * nu + i] - d; };
+  // Crossings of the grid's lines by the contour, by the line piece they lie on: along u
+  // (i, j)-(i+1, j) first, then along v (i, j)-(i, j+1).
+  const int alongU = (nu - 1) * nv;
+  const auto inU = [&](int i, int j) { return j * (nu - 1) + i; };
+  const auto inV = [&](int i, int j) { return alongU + i * (nv - 1) + j; };
+  // Each crossing's neighbours on the contour, and the cell between it and each.
+  std::map<int, std::array<std::pair<int, int>, 2>> links;
+  bool unsure = false;
+  const auto link = [&](int a, int b, int cell) {
+    for (const auto& [from, to] : {std::pair{a, b}, std::pair{b, a}}) {
+      auto& l =
+          links.try_emplace(from, std::array<std::pair<int, int>, 2>{{{-1, -1}, {-1, -1}}}).first->second;
+      if (l[0].first < 0)
+        l[0] = {to, cell};
+      else if (l[1].first < 0)
+        l[1] = {to, cell};
+      else
+        unsure = true;
+    }
+  };
+  for (int j = 0; j + 1 < nv; ++j)
+    for (int i = 0; i + 1 < nu; ++i) {
+      const bool a = f(i, j) >= 0, b = f(i + 1, j) >= 0, c = f(i + 1, j + 1) >= 0, e = f(i, j + 1) >= 0;
+      if (a == b && b == c && c == e) continue;
+      const int cell = j * (nu - 1) + i;
+      const int bottom = inU(i, j), right = inV(i + 1, j), top = inU(i, j + 1), left = inV(i, j);
+      std::vector<int> crossed;
+      if (a != b) crossed.push_back(bottom);
+      if (b != c) crossed.push_back(right);
+      if (c != e) crossed.push_back(top);
+      if (e != a) crossed.push_back(left);
+      if (crossed.size() == 2) {
+        link(crossed[0], crossed[1], cell);
+        continue;
+      }
+      // A saddle: the exact height at the cell's centre tells which corners connect.
+      const double centre = n_.XYZ().Dot(s.Value((u_[i] + u_[i + 1]) / 2, (v_[j] + v_[j + 1]) / 2).XYZ()) - d;
+      if (std::abs(centre) <= kOnPlane) return std::nullopt;
+      if ((centre >= 0) == a)
+        link(bottom, right, cell), link(top, left, cell);
+      else
+        link(left, bottom, cell), link(right, top, cell);
+    }
+  if (unsure) return std::nullopt;
+
+  // A crossing's exact point: the root of the height along its line piece.
+  const auto point = [&](int id, gp_Pnt& p, gp_Pnt2d& uv) {
+    const bool onU = id < alongU;
+    const int i = onU ? id % (nu - 1) : (id - alongU) / (nv - 1);
+    const int j = onU ? id / (nu - 1) : (id - alongU) % (nv - 1);
+    const auto at = [&](double t) { return onU ? gp_Pnt2d(t, v_[j]) : gp_Pnt2d(u_[i], t); };
+    const auto g = [&](double t) {
+      gp_Vec du, dv;
+      s.D1(at(t).X(), at(t).Y(), p, du, dv);
+      return std::pair{n_.XYZ().Dot(p.XYZ()) - d, n_.XYZ().Dot((onU ? du : dv).XYZ())};
+    };
+    const std::optional<double> t =
+        root(g, onU ? u_[i] : v_[j], onU ? u_[i + 1] : v_[j + 1], f(i, j), onU ? f(i + 1, j) : f(i, j + 1));
+    if (!t) return false;
+    uv = at(*t);
+    p = s.Value(uv.X(), uv.Y());
+    return std::abs(n_.XYZ().Dot(p.XYZ()) - d) <= kOnPlane;
+  };
+
+  // From each crossing on the grid's border (one neighbour) to the next, then the closed ones.
+  std::vector<Contour> out;
+  std::map<int, bool> done;
+  const auto trace = [&](int start, bool closed) {
+    Contour c;
+    c.closed = closed;
+    for (int at = start, from = -1;;) {
+      done[at] = true;
+      gp_Pnt p;
+      gp_Pnt2d uv;
+      if (!point(at, p, uv)) return false;
+      c.p.push_back(p), c.uv.push_back(uv);
+      const auto& l = links.at(at);
+      const auto& next = l[0].first != from ? l[0] : l[1];
+      if (next.first < 0) break;
+      c.cell.push_back(next.second);
+      if (next.first == start) break;
+      from = at, at = next.first;
+    }
+    out.push_back(std::move(c));
+    return true;
+  };
+  for (const auto& [id, l] : links)
+    if (l[1].first < 0 && !done.count(id) && !trace(id, false)) return std::nullopt;
+  for (const auto& [id, l] : links)
+    if (!done.count(id) && !trace(id, true)) return std::nullopt;
+  return out;
+}
+
 std::optional<std::vector<FaceByFace::AloneEdge>> TracedFace::cut(double d) const {
   if (empty()) return std::nullopt;
   try {
+    const std::optional<std::vector<Contour>> all = contours(d);
+    if (!all) return std::nullopt;
     const BRepAdaptor_Surface s(face_, Standard_False);
-    const int nu = static_cast<int>(u_.size()), nv = static_cast<int>(v_.size());
-    const auto f = [&](int i, int j) { return h_[static_cast<size_t>(j) * nu + i] - d; };
-    // Crossings of the grid's lines by the contour, by the line piece they lie on: along u
-    // (i, j)-(i+1, j) first, then along v (i, j)-(i, j+1).
-    const int alongU = (nu - 1) * nv;
-    const auto inU = [&](int i, int j) { return j * (nu - 1) + i; };
-    const auto inV = [&](int i, int j) { return alongU + i * (nv - 1) + j; };
-    std::map<int, std::array<int, 2>> links;  // each crossing's neighbours on the contour
-    bool unsure = false;
-    const auto link = [&](int a, int b) {
-      for (const auto& [from, to] : {std::pair{a, b}, std::pair{b, a}}) {
-        auto& l = links.try_emplace(from, std::array<int, 2>{-1, -1}).first->second;
-        if (l[0] < 0)
-          l[0] = to;
-        else if (l[1] < 0)
-          l[1] = to;
-        else
-          unsure = true;
-      }
-    };
-    for (int j = 0; j + 1 < nv; ++j)
-      for (int i = 0; i + 1 < nu; ++i) {
-        const bool a = f(i, j) >= 0, b = f(i + 1, j) >= 0, c = f(i + 1, j + 1) >= 0, e = f(i, j + 1) >= 0;
-        if (a == b && b == c && c == e) continue;
-        const int bottom = inU(i, j), right = inV(i + 1, j), top = inU(i, j + 1), left = inV(i, j);
-        std::vector<int> crossed;
-        if (a != b) crossed.push_back(bottom);
-        if (b != c) crossed.push_back(right);
-        if (c != e) crossed.push_back(top);
-        if (e != a) crossed.push_back(left);
-        if (crossed.size() == 2) {
-          link(crossed[0], crossed[1]);
-          continue;
-        }
-        // A saddle: the exact height at the cell's centre tells which corners connect.
-        const double centre =
-            n_.XYZ().Dot(s.Value((u_[i] + u_[i + 1]) / 2, (v_[j] + v_[j + 1]) / 2).XYZ()) - d;
-        if (std::abs(centre) <= kOnPlane) return std::nullopt;
-        if ((centre >= 0) == a)
-          link(bottom, right), link(top, left);
-        else
-          link(left, bottom), link(right, top);
-      }
-    if (unsure) return std::nullopt;
-
-    // A crossing's exact point: the root of the height along its line piece.
-    const auto point = [&](int id) -> std::optional<gp_Pnt> {
-      const bool onU = id < alongU;
-      const int i = onU ? id % (nu - 1) : (id - alongU) / (nv - 1);
-      const int j = onU ? id / (nu - 1) : (id - alongU) % (nv - 1);
-      double lo = onU ? u_[i] : v_[j], hi = onU ? u_[i + 1] : v_[j + 1];
-      double flo = f(i, j), fhi = onU ? f(i + 1, j) : f(i, j + 1);
-      double t = lo + (hi - lo) * flo / (flo - fhi);
-      for (int k = 0; k < 60; ++k) {
-        gp_Pnt p;
-        gp_Vec du, dv;
-        s.D1(onU ? t : u_[i], onU ? v_[j] : t, p, du, dv);
-        const double g = n_.XYZ().Dot(p.XYZ()) - d, slope = n_.XYZ().Dot((onU ? du : dv).XYZ());
-        if (std::abs(g) <= 0.1 * kOnPlane) return p;
-        if ((g >= 0) == (flo >= 0))
-          lo = t, flo = g;
-        else
-          hi = t, fhi = g;
-        const double next = t - g / slope;
-        t = slope != 0 && next > lo && next < hi ? next : (lo + hi) / 2;
-        if (hi - lo <= 1e-15 * (std::abs(lo) + std::abs(hi) + 1)) break;
-      }
-      gp_Pnt p = s.Value(onU ? t : u_[i], onU ? v_[j] : t);
-      if (std::abs(n_.XYZ().Dot(p.XYZ()) - d) > kOnPlane) return std::nullopt;
-      return p;
-    };
-
-    // The contours: from each crossing on the grid's border (one neighbour) to the next,
-    // then the closed ones.
     std::vector<FaceByFace::AloneEdge> out;
-    std::map<int, bool> done;
-    const auto trace = [&](int start, bool closed) -> bool {
-      std::vector<gp_Pnt> points;
-      for (int at = start, from = -1;;) {
-        done[at] = true;
-        const std::optional<gp_Pnt> p = point(at);
-        if (!p) return false;
-        if (points.empty() || points.back().Distance(*p) > kSame) points.push_back(*p);
-        const std::array<int, 2>& l = links.at(at);
-        const int next = l[0] != from ? l[0] : l[1];
-        if (next < 0 || next == start) break;
-        from = at, at = next;
+    for (const Contour& c : *all) {
+      std::vector<Contour> pieces{c};
+      if (!boxed_) {
+        const std::optional<std::vector<Contour>> in = inside(c, d);
+        if (!in) return std::nullopt;
+        pieces = *in;
       }
-      if (closed && points.size() > 1 && points.back().Distance(points.front()) <= kSame) points.pop_back();
-      if (points.size() < (closed ? 3u : 2u)) return false;
-      std::vector<double> params{0};
-      for (size_t k = 1; k < points.size(); ++k)
-        params.push_back(params.back() + points[k - 1].Distance(points[k]));
-      if (closed) params.push_back(params.back() + points.back().Distance(points.front()));
-      const auto [curve, error] = fit(points, params, closed);
-      if (curve.IsNull()) return false;
-      const double tolerance = std::max(2 * error, Precision::Confusion());
-      BRep_Builder builder;
-      TopoDS_Vertex first, last;
-      builder.MakeVertex(first, points.front(), tolerance);
-      last = first;
-      if (!closed) builder.MakeVertex(last, points.back(), tolerance);
-      TopoDS_Edge edge;
-      builder.MakeEdge(edge, curve, tolerance);
-      builder.Add(edge, first.Oriented(TopAbs_FORWARD));
-      builder.Add(edge, last.Oriented(TopAbs_REVERSED));
-      builder.Range(edge, curve->FirstParameter(), curve->LastParameter());
-      out.push_back({edge, first, last});
-      return true;
-    };
-    for (const auto& [id, l] : links)
-      if (l[1] < 0 && !done.count(id) && !trace(id, false)) return std::nullopt;
-    for (const auto& [id, l] : links)
-      if (!done.count(id) && !trace(id, true)) return std::nullopt;
+      for (const Contour& piece : pieces) {
+        const std::optional<FaceByFace::AloneEdge> edge =
+            edgeThrough(piece.p, piece.uv, piece.closed, s, n_, d);
+        if (!edge) return std::nullopt;
+        out.push_back(*edge);
+      }
+    }
     return out;
   } catch (const Standard_Failure&) {
     return std::nullopt;

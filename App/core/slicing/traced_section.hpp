@@ -11,15 +11,21 @@
 // 5-13 ms a plane and face on occt-misc Ball.brep and Pump_TopCover.brep, 18 ms on
 // linkrods.step: most of those parts' exact patches.
 //
-// Only for a face bounded by its parameter box (every edge's curve on the face lies on the
-// box's border): a contour then ends where it meets the face's edges. Not sure of a plane,
-// and the caller asks OCCT: a saddle of the height within a cell on the plane, two points of
-// a contour at one place (the plane through a grid point or tangent to the face), a point
-// that Newton's method does not put on the plane, a contour no B-spline fits.
+// On a face bounded by its parameter box (every edge's curve on the face lies on the box's
+// border) a contour ends where it meets the face's edges. On any other face (trimmed, with
+// holes) each contour is cut where it crosses the face's boundary, found on the polygon of
+// the edges' curves on the face and then exactly on the edge, and the pieces inside are
+// kept. Not sure of a plane, and the caller asks OCCT: a saddle of the height within a cell
+// on the plane, a point Newton's method does not put on the plane, a crossing of the
+// boundary not found on its edge, pieces whose insides do not alternate, a contour no
+// B-spline fits.
 #pragma once
 
+#include <TopoDS_Edge.hxx>
 #include <TopoDS_Face.hxx>
 #include <gp_Dir.hxx>
+#include <gp_Pnt.hxx>
+#include <gp_Pnt2d.hxx>
 
 #include <optional>
 #include <vector>
@@ -40,11 +46,37 @@ class TracedFace {
   std::optional<std::vector<FaceByFace::AloneEdge>> cut(double d) const;
 
  private:
+  // One contour of a plane: its exact points in order, their parameters on the face, and
+  // the grid cell each piece between two of them lies in (piece k: points k to k + 1, and
+  // for a closed one the last back to the first).
+  struct Contour {
+    std::vector<gp_Pnt> p;
+    std::vector<gp_Pnt2d> uv;
+    std::vector<int> cell;
+    bool closed = false;
+  };
+  std::optional<std::vector<Contour>> contours(double d) const;
+  // The pieces of a contour inside a trimmed face, each from the face's boundary to the
+  // boundary (or the whole closed contour); nullopt where unsure.
+  std::optional<std::vector<Contour>> inside(const Contour& c, double d) const;
+  bool contains(const gp_Pnt2d& uv) const;  // by the boundary's polygon, even-odd
+
   TopoDS_Face face_;  // each cut evaluates it through its own adaptor: a B-spline's cache
                       // is written by every evaluation
   gp_Dir n_;
   std::vector<double> u_, v_;  // the grid's parameters
   std::vector<double> h_;      // n·S at each grid point, u fastest
+  // A face not bounded by its parameter box: its boundary in (u, v), each edge's curve on
+  // the face as a polygon of sides, and per grid cell the sides whose box meets it.
+  struct Side {
+    gp_Pnt2d a, b;
+    int edge;       // into edges_
+    double ta, tb;  // the edge's parameters at a and b
+  };
+  std::vector<TopoDS_Edge> edges_;
+  std::vector<Side> sides_;
+  std::vector<std::vector<int>> cellSides_;
+  bool boxed_ = true;
 };
 
 }  // namespace sliceform
