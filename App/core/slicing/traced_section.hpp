@@ -11,10 +11,10 @@
 // 5-13 ms a plane and face on occt-misc Ball.brep and Pump_TopCover.brep, 18 ms on
 // linkrods.step: most of those parts' exact patches.
 //
-// On a face bounded by its parameter box (every edge's curve on the face lies on the box's
-// border) a contour ends where it meets the face's edges. On any other face (trimmed, with
-// holes) each contour is cut where it crosses the face's boundary, found on the polygon of
-// the edges' curves on the face and then exactly on the edge, and the pieces inside are
+// Each contour is cut where it crosses the face's boundary (trimmed, with holes, or the
+// box's border itself), found on the polygon of the edges' curves on the face and then
+// exactly on the edge's 3D curve, where the route's crossings of that edge are: a file's
+// edge may stray from its face's border (0.04 mm on linkrods.step). The pieces inside are
 // kept. Not sure of a plane, and the caller asks OCCT: a saddle of the height within a cell
 // on the plane, a point Newton's method does not put on the plane, a crossing of the
 // boundary not found on its edge, pieces whose insides do not alternate, a contour no
@@ -36,7 +36,8 @@ namespace sliceform {
 
 class TracedFace {
  public:
-  // Samples the face; empty() when it is not bounded by its parameter box, or fails.
+  // Samples the face and its boundary; empty() where its parameters are unbounded or an
+  // edge has no curve on it.
   TracedFace(const TopoDS_Face& face, const gp_Dir& n);
   bool empty() const { return u_.empty(); }
 
@@ -56,8 +57,8 @@ class TracedFace {
     bool closed = false;
   };
   std::optional<std::vector<Contour>> contours(double d) const;
-  // The pieces of a contour inside a trimmed face, each from the face's boundary to the
-  // boundary (or the whole closed contour); nullopt where unsure.
+  // The pieces of a contour inside the face, each from the face's boundary to the boundary
+  // (or the whole closed contour); nullopt where unsure.
   std::optional<std::vector<Contour>> inside(const Contour& c, double d) const;
   bool contains(const gp_Pnt2d& uv) const;  // by the boundary's polygon, even-odd
 
@@ -66,8 +67,8 @@ class TracedFace {
   gp_Dir n_;
   std::vector<double> u_, v_;  // the grid's parameters
   std::vector<double> h_;      // n·S at each grid point, u fastest
-  // A face not bounded by its parameter box: its boundary in (u, v), each edge's curve on
-  // the face as a polygon of sides, and per grid cell the sides whose box meets it.
+  // The face's boundary in (u, v): each edge's curve on the face as a polygon of sides, and
+  // per grid cell the sides whose box meets it.
   struct Side {
     gp_Pnt2d a, b;
     int edge;       // into edges_
@@ -76,7 +77,6 @@ class TracedFace {
   std::vector<TopoDS_Edge> edges_;
   std::vector<Side> sides_;
   std::vector<std::vector<int>> cellSides_;
-  bool boxed_ = true;
 };
 
 }  // namespace sliceform
