@@ -68,7 +68,9 @@ TEST(TracedSection, FollowsTheFaceAsOcctsSectionDoes) {
         cutByBore += edges->size() > 1 ? 1 : 0;
       }
     }
-    if (bored) EXPECT_GT(cutByBore, 0);  // some contours were cut where they cross a hole
+    if (bored) {
+      EXPECT_GT(cutByBore, 0);
+    }  // some contours were cut where they cross a hole
   }
 }
 

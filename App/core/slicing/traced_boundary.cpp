@@ -11,9 +11,6 @@
 namespace sliceform {
 namespace {
 
-// mm between two crossings of the boundary that are one: then the plane meets a vertex, or
-// touches the boundary, and the trace is unsure.
-constexpr double kSame = 1e-6;
 // Of the parameter box's size: a contour's end this near a side lies on the boundary.
 constexpr double kOnSide = 1e-9;
 

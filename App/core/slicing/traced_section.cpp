@@ -30,9 +30,9 @@ namespace {
 // (slicing/torus_section.cpp: finer made the patches' Booleans slower than the sections
 // gained). Its exact points are held to half that: between them it strays a little more.
 constexpr double kTolerance = 1e-3;
-// mm from the plane Newton's method must bring a point; and two points of a contour closer
-// than kSame are one.
-constexpr double kOnPlane = 1e-7, kSame = 1e-6;
+// mm from the plane Newton's method must bring a point.
+constexpr double kOnPlane = 1e-7;
+constexpr double kSame = TracedFace::kSame;
 // Points a contour is interpolated through, at first and at most.
 constexpr int kFewest = 8, kMost = 2048;
 // Grid steps per span of the surface (between knots), and per direction at most and least

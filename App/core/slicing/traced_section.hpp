@@ -36,6 +36,9 @@ namespace sliceform {
 
 class TracedFace {
  public:
+  // mm: two points of a contour, or two crossings of the boundary, closer than this are one.
+  static constexpr double kSame = 1e-6;
+
   // Samples the face and its boundary; empty() where its parameters are unbounded or an
   // edge has no curve on it.
   TracedFace(const TopoDS_Face& face, const gp_Dir& n);
