@@ -324,7 +324,9 @@ TEST(BrepSlicer, SectionRoutesMakeTheFacesOfSolidsWithHoles) {
         EXPECT_NEAR(mesh.slices[i].region.area(), s.area, perimeter(s.faces) * d) << "at " << positions[i];
         nested += s.region.holeCount() + s.region.components().size() - 1;
       }
-      if (c.nests) EXPECT_GT(nested, 0u);  // the nesting was tested
+      if (c.nests) {
+        EXPECT_GT(nested, 0u);  // the nesting was tested
+      }
     }
   }
 }
@@ -357,6 +359,25 @@ TEST(BrepSlicer, FaceByFaceTakesAPlaneNearAVertexOfALooseEdge) {
   for (const ExactSlice& s : made) EXPECT_NEAR(s.area, 600, 1e-6) << "at " << s.position;
 }
 
+// Each loose loft (its edges claiming 1 and then 3 mm) at twelve planes across it in four
+// directions: `route(loose, frame, positions)` says how many planes its route answered,
+// which must be some.
+template <class Route>
+void onLooseLofts(const Route& route) {
+  for (const double looseness : {1.0, 3.0}) {
+    const TopoDS_Shape loose = test::boredLoft(looseness);
+    int taken = 0;
+    for (const Vec3& n : {Vec3{1, 0, 0}, Vec3{1, 0, 0.5}, Vec3{0, 1, 0}, Vec3{0, 0, 1}}) {
+      SCOPED_TRACE("looseness " + std::to_string(looseness) + ", normal " + std::to_string(n.x) + " " +
+                   std::to_string(n.y) + " " + std::to_string(n.z));
+      const SliceFrame frame = makeSliceFrame(n);
+      const Interval range = modelFromShape(test::boredLoft(), "loft", 0.01).mesh.extent(frame.normal);
+      taken += route(loose, frame, uniformPositions(range.lo, range.hi, 12));
+    }
+    EXPECT_GT(taken, 0) << "looseness " << looseness;  // the route still answers where it can
+  }
+}
+
 // Edges that claim 1-3 mm of tolerance make OCCT's cut of a free-form face alone go wrong:
 // the face's boundary circle 0.8 mm off the plane came back as its section (113 mm² for
 // 129), and edges were put on the plane next to theirs (a plane read as missing the solid).
@@ -365,30 +386,22 @@ TEST(BrepSlicer, FaceByFaceTakesAPlaneNearAVertexOfALooseEdge) {
 // answers, its faces are the solid's section.
 TEST(BrepSlicer, FaceByFaceRefusesWrongCutsOfLooseFaces) {
   const TopoDS_Shape tight = test::boredLoft();
-  for (const double looseness : {1.0, 3.0}) {
-    const TopoDS_Shape loose = test::boredLoft(looseness);
+  onLooseLofts([&](const TopoDS_Shape& loose, const SliceFrame& frame, const std::vector<double>& positions) {
+    const std::vector<ExactSlice> truth =
+        sliceBrep(tight, frame, positions, 1e-3, SliceDetail::Measured, SectionRoute::Common);
+    const std::vector<ExactSlice> made =
+        sliceBrep(loose, frame, positions, 1e-3, SliceDetail::Measured, SectionRoute::FaceByFace);
     int taken = 0;
-    for (const Vec3& n : {Vec3{1, 0, 0}, Vec3{1, 0, 0.5}, Vec3{0, 1, 0}, Vec3{0, 0, 1}}) {
-      SCOPED_TRACE("looseness " + std::to_string(looseness) + ", normal " + std::to_string(n.x) + " " +
-                   std::to_string(n.y) + " " + std::to_string(n.z));
-      const SliceFrame frame = makeSliceFrame(n);
-      const Interval range = modelFromShape(tight, "loft", 0.01).mesh.extent(frame.normal);
-      const std::vector<double> positions = uniformPositions(range.lo, range.hi, 12);
-      const std::vector<ExactSlice> truth =
-          sliceBrep(tight, frame, positions, 1e-3, SliceDetail::Measured, SectionRoute::Common);
-      const std::vector<ExactSlice> made =
-          sliceBrep(loose, frame, positions, 1e-3, SliceDetail::Measured, SectionRoute::FaceByFace);
-      for (size_t i = 0; i < positions.size(); ++i) {
-        if (made[i].route != SectionRoute::FaceByFace) continue;
-        ++taken;
-        // Within 10 µm of the section along the outline, on average: OCCT's cut of a loose
-        // face is that far off its true section (one plane: 0.11 mm² of 220); a wrong one
-        // was 3-45 mm² off, or empty.
-        EXPECT_NEAR(made[i].area, truth[i].area, 0.01 * perimeter(truth[i].faces)) << "at " << positions[i];
-      }
+    for (size_t i = 0; i < positions.size(); ++i) {
+      if (made[i].route != SectionRoute::FaceByFace) continue;
+      ++taken;
+      // Within 10 µm of the section along the outline, on average: OCCT's cut of a loose
+      // face is that far off its true section (one plane: 0.11 mm² of 220); a wrong one
+      // was 3-45 mm² off, or empty.
+      EXPECT_NEAR(made[i].area, truth[i].area, 0.01 * perimeter(truth[i].faces)) << "at " << positions[i];
     }
-    EXPECT_GT(taken, 0);  // the route still answers where it can
-  }
+    return taken;
+  });
 }
 
 // The section-curves route (the whole solid's BRepAlgoAPI_Section) on the same loose loft
@@ -399,35 +412,30 @@ TEST(BrepSlicer, FaceByFaceRefusesWrongCutsOfLooseFaces) {
 // wherever the route answers, every edge lies on its plane. (What it still gets wrong there,
 // within the plane, and the Common's answers: docs/decisions.md.)
 TEST(BrepSlicer, SectionCurvesPutNoEdgeOffItsPlane) {
-  for (const double looseness : {1.0, 3.0}) {
-    const TopoDS_Shape loose = test::boredLoft(looseness);
+  onLooseLofts([](const TopoDS_Shape& loose, const SliceFrame& frame, const std::vector<double>& positions) {
+    const std::vector<ExactSlice> made =
+        sliceBrep(loose, frame, positions, 1e-3, SliceDetail::FacesOnly, SectionRoute::Curves);
     int taken = 0;
-    for (const Vec3& n : {Vec3{1, 0, 0}, Vec3{1, 0, 0.5}, Vec3{0, 1, 0}, Vec3{0, 0, 1}}) {
-      SCOPED_TRACE("looseness " + std::to_string(looseness) + ", normal " + std::to_string(n.x) + " " +
-                   std::to_string(n.y) + " " + std::to_string(n.z));
-      const SliceFrame frame = makeSliceFrame(n);
-      const Interval range = modelFromShape(test::boredLoft(), "loft", 0.01).mesh.extent(frame.normal);
-      const std::vector<double> positions = uniformPositions(range.lo, range.hi, 12);
-      const std::vector<ExactSlice> made =
-          sliceBrep(loose, frame, positions, 1e-3, SliceDetail::FacesOnly, SectionRoute::Curves);
-      for (size_t i = 0; i < positions.size(); ++i) {
-        if (made[i].route != SectionRoute::Curves || made[i].faces.IsNull()) continue;
-        ++taken;
-        double off = 0;
-        for (TopExp_Explorer e(made[i].faces, TopAbs_EDGE); e.More(); e.Next()) {
-          double first = 0, last = 0;
-          const Handle(Geom_Curve) curve = BRep_Tool::Curve(TopoDS::Edge(e.Current()), first, last);
-          ASSERT_FALSE(curve.IsNull());
-          for (const double t : {first, (first + last) / 2, last}) {
-            const gp_Pnt p = curve->Value(t);
-            off = std::max(off, std::abs(frame.position({p.X(), p.Y(), p.Z()}) - positions[i]));
-          }
+    for (size_t i = 0; i < positions.size(); ++i) {
+      if (made[i].route != SectionRoute::Curves || made[i].faces.IsNull()) continue;
+      ++taken;
+      double off = 0;
+      for (TopExp_Explorer e(made[i].faces, TopAbs_EDGE); e.More(); e.Next()) {
+        double first = 0, last = 0;
+        const Handle(Geom_Curve) curve = BRep_Tool::Curve(TopoDS::Edge(e.Current()), first, last);
+        if (curve.IsNull()) {
+          ADD_FAILURE() << "an edge without a curve at " << positions[i];
+          continue;
         }
-        EXPECT_LE(off, 0.01) << "at " << positions[i];
+        for (const double t : {first, (first + last) / 2, last}) {
+          const gp_Pnt p = curve->Value(t);
+          off = std::max(off, std::abs(frame.position({p.X(), p.Y(), p.Z()}) - positions[i]));
+        }
       }
+      EXPECT_LE(off, 0.01) << "at " << positions[i];
     }
-    EXPECT_GT(taken, 0);  // the route still answers where it can
-  }
+    return taken;
+  });
 }
 
 }  // namespace
