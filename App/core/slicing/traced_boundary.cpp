@@ -48,20 +48,15 @@ std::optional<std::vector<TracedFace::Contour>> TracedFace::inside(const Contour
   const auto onEdge = [&](const Side& side) -> std::optional<gp_Pnt> {
     const BRepAdaptor_Curve curve(edges_[side.edge]);
     const double step = std::abs(side.tb - side.ta);
-    const auto g = [&](double t) {
-      gp_Pnt p;
-      gp_Vec d1;
-      curve.D1(t, p, d1);
-      return std::pair{n_.XYZ().Dot(p.XYZ()) - d, n_.XYZ().Dot(d1.XYZ())};
-    };
+    const auto g = [&](double t) { return n_.XYZ().Dot(curve.Value(t).XYZ()) - d; };
     for (const double wider : {0.0, step}) {
       const double lo = std::max(curve.FirstParameter(), std::min(side.ta, side.tb) - wider);
       const double hi = std::min(curve.LastParameter(), std::max(side.ta, side.tb) + wider);
-      const double flo = g(lo).first, fhi = g(hi).first;
+      const double flo = g(lo), fhi = g(hi);
       if ((flo >= 0) == (fhi >= 0)) continue;
       double a = lo, b = hi, fa = flo;
       for (int k = 0; k < 200 && b - a > 1e-15 * (std::abs(a) + std::abs(b) + 1); ++k) {
-        const double mid = (a + b) / 2, fm = g(mid).first;
+        const double mid = (a + b) / 2, fm = g(mid);
         if ((fm >= 0) == (fa >= 0))
           a = mid, fa = fm;
         else

@@ -159,9 +159,9 @@ std::optional<FaceByFace::AloneEdge> edgeThrough(const std::vector<gp_Pnt>& poin
   if (closed && kept.size() > 1 && kept.back().Distance(kept.front()) <= kSame)
     kept.pop_back(), uv.pop_back();
   if (kept.size() < (closed ? 3u : 2u)) return std::nullopt;
-  // An open piece's ends are crossings on the face's edges, which lie as far off the face
-  // as the edges' tolerances say (up to 0.6 µm on linkrods.step): the curve through them
-  // strays that much more near them.
+  // An open piece's ends are crossings on the face's edges, which may lie off the face
+  // (within their tolerance, if the file is right; 0.04 mm on linkrods.step): the curve
+  // through them strays that much more near them.
   double slack = 0;
   if (!closed)
     for (const size_t k : {size_t(0), kept.size() - 1}) {
