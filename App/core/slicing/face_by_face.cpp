@@ -193,8 +193,8 @@ bool surfaceCurves(const BRepAdaptor_Surface& s, const gp_Pln& plane, const Bnd_
   }
   // B-splines, surfaces of revolution, tori cut aslant: not here (traced, or cutAlone).
   // Walking them with GeomInt_IntSS was tried: as fast as the section's own walk, but its
-  // curves made exact patches break rules their polygons keep (occt-misc Bottom.brep: 9 patches emitted
-  // as polygons instead of 3; MODERN_Sink_1: 9 instead of 2).
+  // curves made exact patches break rules their polygons keep (occt-misc Bottom.brep: 9
+  // patches emitted as polygons instead of 3; MODERN_Sink_1: 9 instead of 2).
   if (s.GetType() > GeomAbs_Torus || !q.IsDone() || q.TypeInter() == IntAna_NoGeometricSolution) return false;
   const IntAna_ResultType type = q.TypeInter();
   if (type == IntAna_Empty) return true;

@@ -11,11 +11,11 @@
 // A face of another kind (B-spline, surface of revolution, a torus cut aslant) is traced on
 // its parameters (slicing/traced_section.hpp), and where the trace is unsure, cut by
 // BRepAlgoAPI_Section of that face alone with the plane; either way its curves end at the
-// same crossing vertices. The route answers nothing where
-// it would have to guess or cannot solve, and the caller then asks BRepAlgoAPI_Section of
-// the whole solid: a face on the plane, the plane through a vertex of the solid or tangent
-// to a face, a crossing on none of a face's curves, a piece on a face's boundary, an end of
-// another face's section at no crossing.
+// same crossing vertices. The route answers nothing where it would have to guess or cannot
+// solve, and the caller then asks BRepAlgoAPI_Section of the whole solid: a face on the
+// plane, the plane through a vertex of the solid or tangent to a face, a crossing on none
+// of a face's curves, a piece on a face's boundary, an end of another face's section at
+// no crossing.
 #pragma once
 
 #include <Bnd_Box.hxx>
@@ -81,7 +81,7 @@ class FaceByFace {
     double lo, hi;
     double uv[4];                              // its parameter box: u min, u max, v min, v max
     std::vector<int> edges;                    // indices into edges_, each once (a seam too)
-    bool solved;                               // whether this route cuts it itself (solvedBy), else cutAlone
+    bool solved;                               // cut by this route's own curves (solvedBy)
     std::shared_ptr<const TracedFace> traced;  // of a face not solved: its sections traced,
                                                // null where they cannot be (cutAlone only)
   };

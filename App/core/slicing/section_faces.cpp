@@ -180,20 +180,16 @@ std::vector<std::optional<SectionFaces>> sectionFaces(const TopoDS_Shape& solid,
   for (const size_t k : rest) at.push_back(positions[k]);
   const std::vector<std::optional<std::vector<TopoDS_Edge>>> curves =
       edgesByPlane(section, toDir(frame.normal), at);
-  std::vector<Handle(TopTools_HSequenceOfShape)> edges(rest.size());
-  for (size_t i = 0; i < rest.size(); ++i)
-    if (curves[i]) {
-      edges[i] = new TopTools_HSequenceOfShape;
-      for (const TopoDS_Edge& e : *curves[i]) edges[i]->Append(e);
-    }
   for (size_t i = 0; i < rest.size(); ++i) {
+    if (!curves[i]) continue;  // unsure: the Common
+    Handle(TopTools_HSequenceOfShape) edges = new TopTools_HSequenceOfShape;
+    for (const TopoDS_Edge& e : *curves[i]) edges->Append(e);
     std::vector<Loop> loops;
     TopoDS_Compound faces;
     builder.MakeCompound(faces);
-    if (edges[i].IsNull()) continue;  // unsure: the Common
-    if (edges[i]->IsEmpty())
+    if (edges->IsEmpty())
       out[rest[i]] = SectionFaces{TopoDS_Shape(), SectionRoute::Curves};
-    else if (loopsOf(edges[i], frame, deflection, loops) && facesOf(loops, planes[rest[i]], builder, faces))
+    else if (loopsOf(edges, frame, deflection, loops) && facesOf(loops, planes[rest[i]], builder, faces))
       out[rest[i]] = SectionFaces{faces, SectionRoute::Curves};
   }
   return out;

@@ -241,28 +241,26 @@ TracedFace::TracedFace(const TopoDS_Face& face, const gp_Dir& n) : face_(face), 
   s.UIntervals(ub, GeomAbs_CN);
   s.VIntervals(vb, GeomAbs_CN);
   std::vector<double> u = gridParameters(ub, u0, u1), v = gridParameters(vb, v0, v1);
-  {
-    // Each edge's curve on the face as sides: 8 a span of it, 16 to 512 an edge.
-    const size_t cells = (u.size() - 1) * (v.size() - 1);
-    cellSides_.resize(cells);
-    for (TopExp_Explorer e(face, TopAbs_EDGE); e.More(); e.Next()) {
-      const TopoDS_Edge edge = TopoDS::Edge(e.Current());
-      double first = 0, last = 0;
-      const Handle(Geom2d_Curve) c = BRep_Tool::CurveOnSurface(edge, face, first, last);
-      if (c.IsNull()) return;
-      const Geom2dAdaptor_Curve curve(c, first, last);
-      const int count = std::clamp(8 * curve.NbIntervals(GeomAbs_CN), 16, 512);
-      const int index = static_cast<int>(edges_.size());
-      edges_.push_back(edge);
-      for (int k = 0; k < count; ++k) {
-        const double ta = first + (last - first) * k / count, tb = first + (last - first) * (k + 1) / count;
-        const Side side{c->Value(ta), c->Value(tb), index, ta, tb};
-        const auto [i0, i1] = cellsMeeting(u, side.a.X(), side.b.X());
-        const auto [j0, j1] = cellsMeeting(v, side.a.Y(), side.b.Y());
-        for (int j = j0; j <= j1; ++j)
-          for (int i = i0; i <= i1; ++i) cellSides_[j * (u.size() - 1) + i].push_back(int(sides_.size()));
-        sides_.push_back(side);
-      }
+  // Each edge's curve on the face as sides: 8 a span of it, 16 to 512 an edge.
+  cellSides_.resize((u.size() - 1) * (v.size() - 1));
+  for (TopExp_Explorer e(face, TopAbs_EDGE); e.More(); e.Next()) {
+    const TopoDS_Edge edge = TopoDS::Edge(e.Current());
+    double first = 0, last = 0;
+    const Handle(Geom2d_Curve) c = BRep_Tool::CurveOnSurface(edge, face, first, last);
+    if (c.IsNull()) return;
+    const int count = std::clamp(8 * Geom2dAdaptor_Curve(c, first, last).NbIntervals(GeomAbs_CN), 16, 512);
+    const int index = static_cast<int>(edges_.size());
+    edges_.push_back(edge);
+    gp_Pnt2d a = c->Value(first);
+    for (int k = 0; k < count; ++k) {
+      const double ta = first + (last - first) * k / count, tb = first + (last - first) * (k + 1) / count;
+      const Side side{a, c->Value(tb), index, ta, tb};
+      a = side.b;
+      const auto [i0, i1] = cellsMeeting(u, side.a.X(), side.b.X());
+      const auto [j0, j1] = cellsMeeting(v, side.a.Y(), side.b.Y());
+      for (int j = j0; j <= j1; ++j)
+        for (int i = i0; i <= i1; ++i) cellSides_[j * (u.size() - 1) + i].push_back(int(sides_.size()));
+      sides_.push_back(side);
     }
   }
   h_.reserve(u.size() * v.size());
