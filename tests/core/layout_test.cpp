@@ -7,11 +7,13 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <random>
 #include <regex>
 #include <sstream>
 
 #include "layout/labels.hpp"
 #include "layout/layout.hpp"
+#include "layout/nesting.hpp"
 #include "output/sheets_cairo.hpp"
 #include "pipeline/design.hpp"
 #include "support/error.hpp"
@@ -351,6 +353,45 @@ TEST(Layout, PatchThatFitsOnlyTurnedIsTurned) {
       EXPECT_GE(b.min.y, a3.margin - 1e-6);
       EXPECT_LE(b.max.x, a3.width - a3.margin + 1e-6);
       EXPECT_LE(b.max.y, a3.height - a3.margin + 1e-6);
+    }
+  }
+}
+
+// Sheets where a patch has no room are not asked for it (layout/first_fit.hpp): every
+// patch still goes on the sheet, at the place and turn, that libnest2d's own first fit
+// gives it. Shapes of all kinds and sizes, so that sheets fill up unevenly and most patches
+// meet full sheets first; with turns and without.
+TEST(Layout, NestingSkipsNoSheetThatWouldTakeThePatch) {
+  std::mt19937 random(7);
+  std::uniform_real_distribution<double> size(8, 110), turn(0, 2 * M_PI), count(3, 9);
+  std::vector<Region2d> outlines;
+  std::vector<std::string> names;
+  for (int k = 0; k < 48; ++k) {
+    // A convex polygon: points on an ellipse, a few to many, turned any way.
+    const double a = size(random), b = size(random) / 2, t = turn(random);
+    const int n = k % 4 == 0 ? 4 : static_cast<int>(count(random)) * (k % 3 + 1);
+    Region2d::Loop loop;
+    for (int i = 0; i < n; ++i) {
+      const double u = 2 * M_PI * i / n, x = a * std::cos(u), y = b * std::sin(u);
+      loop.push_back({x * std::cos(t) - y * std::sin(t), x * std::sin(t) + y * std::cos(t)});
+    }
+    outlines.push_back(Region2d::fromLoops({loop}));
+    names.push_back("U" + std::to_string(k));
+  }
+  for (const bool rotate : {true, false}) {
+    SheetSpec a4 = sheetSpec("A4", 10, 3);
+    a4.rotate = rotate;
+    const Packing skipping = nestOnSheets(outlines, names, a4);
+    const Packing asking = nestOnSheets(outlines, names, a4, true);
+    EXPECT_GE(asking.sheets, 4) << "too few sheets to skip any";
+    EXPECT_EQ(skipping.sheets, asking.sheets);
+    ASSERT_EQ(skipping.placements.size(), asking.placements.size());
+    for (size_t k = 0; k < outlines.size(); ++k) {
+      EXPECT_EQ(skipping.placements[k].sheet, asking.placements[k].sheet)
+          << names[k] << (rotate ? " turning" : "");
+      EXPECT_EQ(skipping.placements[k].offset.x, asking.placements[k].offset.x) << names[k];
+      EXPECT_EQ(skipping.placements[k].offset.y, asking.placements[k].offset.y) << names[k];
+      EXPECT_EQ(skipping.placements[k].rotation, asking.placements[k].rotation) << names[k];
     }
   }
 }

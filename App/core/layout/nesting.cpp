@@ -6,9 +6,11 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <regex>
 
 #include "geometry/simplify.hpp"
+#include "layout/first_fit.hpp"
 #include "support/error.hpp"
 
 namespace sliceform {
@@ -27,6 +29,8 @@ Region2d::Loop hullOf(const Region2d& outline) {
   for (const Region2d::Loop& loop : outline.loops())
     if (Region2d::signedArea(loop) > 0)
       for (const Vec2& p : loop) points.push_back({units(p.x), units(p.y)});
+  // Closed, as libnest2d's hull takes it: open, a triangle's three points read as two.
+  if (!points.empty()) points.push_back(points.front());
   Region2d::Loop hull;
   for (const ClipperLib::IntPoint& p : libnest2d::shapelike::convexHull(points))
     hull.push_back({p.X / kUnits, p.Y / kUnits});
@@ -92,6 +96,126 @@ bool fitsOnlyTurned(const Box2& b, const std::string& name, const SheetSpec& s) 
   return !upright;
 }
 
+// Round-off the room test allows for, in libnest2d's units (10 µm): a part that fits
+// exactly is not ruled out.
+constexpr double kRoomSlack = 10;
+
+// The convex `loop` (libnest2d's units) shrunk toward its vertices' mean so that every edge
+// moves in by kRoomSlack at least, in mm.
+Region2d::Loop shrunk(const ClipperLib::Path& loop) {
+  double cx = 0, cy = 0;
+  for (const ClipperLib::IntPoint& p : loop)
+    cx += static_cast<double>(p.X) / loop.size(), cy += static_cast<double>(p.Y) / loop.size();
+  double near = HUGE_VAL;
+  for (size_t i = 0; i < loop.size(); ++i) {
+    const ClipperLib::IntPoint a = loop[i], b = loop[(i + 1) % loop.size()];
+    const double dx = static_cast<double>(b.X - a.X), dy = static_cast<double>(b.Y - a.Y),
+                 l = std::hypot(dx, dy);
+    if (l > 0) near = std::min(near, std::abs(dx * (cy - a.Y) - dy * (cx - a.X)) / l);
+  }
+  if (!(near > kRoomSlack)) return {};
+  const double f = 1 - kRoomSlack / near;
+  Region2d::Loop out;
+  for (const ClipperLib::IntPoint& p : loop)
+    out.push_back({(cx + f * (p.X - cx)) / kUnits, (cy + f * (p.Y - cy)) / kUnits});
+  return out;
+}
+
+// The convex loop counter-clockwise from its lowest vertex (leftmost of the lowest), without
+// a closing repeat.
+ClipperLib::Path fromLowest(ClipperLib::Path loop) {
+  if (loop.size() > 1 && loop.front() == loop.back()) loop.pop_back();
+  if (!ClipperLib::Orientation(loop)) std::reverse(loop.begin(), loop.end());
+  const auto lowest = std::min_element(loop.begin(), loop.end(), [](const auto& a, const auto& b) {
+    return a.Y < b.Y || (a.Y == b.Y && a.X < b.X);
+  });
+  std::rotate(loop.begin(), lowest, loop.end());
+  return loop;
+}
+
+// The Minkowski sum of two convex loops: their edges merged in the order they turn.
+ClipperLib::Path convexSum(const ClipperLib::Path& first, const ClipperLib::Path& second) {
+  const ClipperLib::Path a = fromLowest(first), b = fromLowest(second);
+  const size_t n = a.size(), m = b.size();
+  ClipperLib::Path out;
+  out.reserve(n + m);
+  for (size_t i = 0, j = 0; i < n || j < m;) {
+    out.push_back({a[i % n].X + b[j % m].X, a[i % n].Y + b[j % m].Y});
+    const ClipperLib::IntPoint ea{a[(i + 1) % n].X - a[i % n].X, a[(i + 1) % n].Y - a[i % n].Y};
+    const ClipperLib::IntPoint eb{b[(j + 1) % m].X - b[j % m].X, b[(j + 1) % m].Y - b[j % m].Y};
+    const double turn = static_cast<double>(ea.X) * eb.Y - static_cast<double>(ea.Y) * eb.X;
+    if (j == m || (i < n && turn > 0))
+      ++i;
+    else if (i == n || turn < 0)
+      ++j;
+    else
+      ++i, ++j;
+  }
+  return out;
+}
+
+// Whether `part`, turned a quarter turn `turns` times in all (1: as it is, 4: every way),
+// may have room on a sheet holding `placed`: libnest2d takes a place where the part
+// overlaps none of them and the box around all of them fits the sheet (it moves them
+// together onto the sheet after). All are convex, so the translations that put the part
+// over a placed one are the inside of the sum of that one and the part mirrored (their
+// no-fit polygon). Where the translations the box allows all lie in those, it has none.
+bool roomFor(const libnest2d::Box& bin, const FirstFitSkipping<libnest2d::PolygonImpl>::ItemGroup& placed,
+             const libnest2d::Item& part, int turns) {
+  ClipperLib::cInt px0 = std::numeric_limits<ClipperLib::cInt>::max(), py0 = px0, px1 = -px0, py1 = -px0;
+  for (const auto& item : placed)
+    for (const ClipperLib::IntPoint& p : item.get().transformedShape().Contour)
+      px0 = std::min(px0, p.X), px1 = std::max(px1, p.X), py0 = std::min(py0, p.Y), py1 = std::max(py1, p.Y);
+  const double W = static_cast<double>(bin.width()), H = static_cast<double>(bin.height());
+  ClipperLib::Path shape = part.transformedShape().Contour;
+  if (shape.size() > 1 && shape.front() == shape.back()) shape.pop_back();
+  for (int turn = 0; turn < turns; ++turn) {
+    if (turn > 0)
+      for (ClipperLib::IntPoint& p : shape) p = {-p.Y, p.X};
+    ClipperLib::cInt x0 = shape.front().X, x1 = x0, y0 = shape.front().Y, y1 = y0;
+    for (const ClipperLib::IntPoint& p : shape)
+      x0 = std::min(x0, p.X), x1 = std::max(x1, p.X), y0 = std::min(y0, p.Y), y1 = std::max(y1, p.Y);
+    const double lx = px1 - W - x0 - kRoomSlack, hx = px0 + W - x1 + kRoomSlack;
+    const double ly = py1 - H - y0 - kRoomSlack, hy = py0 + H - y1 + kRoomSlack;
+    if (lx > hx || ly > hy) continue;
+    ClipperLib::Path negated;
+    for (const ClipperLib::IntPoint& p : shape) negated.push_back({-p.X, -p.Y});
+    std::vector<Region2d::Loop> over;
+    for (const auto& item : placed) {
+      if (Region2d::Loop loop = shrunk(convexSum(item.get().transformedShape().Contour, negated));
+          loop.size() >= 3)
+        over.push_back(std::move(loop));
+    }
+    const Region2d box = Region2d::fromLoops({{{lx / kUnits, ly / kUnits},
+                                               {hx / kUnits, ly / kUnits},
+                                               {hx / kUnits, hy / kUnits},
+                                               {lx / kUnits, hy / kUnits}}});
+    if (!box.subtract(Region2d::fromLoops(over, FillRule::NonZero)).empty()) return true;
+  }
+  return false;
+}
+
+// libnest2d's nesting of `items` on sheets `bin` (spacing, turns and placer as `sheet` and
+// the comments say), with the selection `Selection` configured by `selection`; the sheets used.
+template <class Selection>
+size_t nestWith(std::vector<libnest2d::Item>& items, const libnest2d::Box& bin, const SheetSpec& sheet,
+                const typename Selection::Config& selection) {
+  using namespace libnest2d;
+  NestConfig<NfpPlacer, Selection> config;
+  // Quarter turns, in order: roomFor turns the part as these do.
+  config.placer_config.rotations = {0.0};
+  if (sheet.rotate) config.placer_config.rotations = {0.0, Pi / 2, Pi, 3 * Pi / 2};
+  config.placer_config.alignment = NfpPlacer::Config::Alignment::BOTTOM_LEFT;
+  config.placer_config.starting_point = NfpPlacer::Config::Alignment::BOTTOM_LEFT;
+  // One thread: the result must not depend on which thread finishes first.
+  config.placer_config.parallel = false;
+  // Fewer candidate positions per item than libnest2d's 0.65: the same sheet counts on
+  // spot, rocker-arm, bunny-lowres and fandisk, in 60-90 % of the time.
+  config.placer_config.accuracy = 0.3f;
+  config.selector_config = selection;
+  return nest(items, bin, units(sheet.spacing), config);
+}
+
 }  // namespace
 
 SheetSpec sheetSpec(const std::string& name, double margin, double spacing) {
@@ -124,7 +248,7 @@ Vec2 Placement::apply(Vec2 p) const {
 }
 
 Packing nestOnSheets(const std::vector<Region2d>& outlines, const std::vector<std::string>& names,
-                     const SheetSpec& sheet) {
+                     const SheetSpec& sheet, bool askEverySheet) {
   using namespace libnest2d;
   // A patch that fits only turned is handed over turned: libnest2d tries its rotations
   // against the sheets it has, but sets an item that fits none of them on a new sheet as it
@@ -135,21 +259,15 @@ Packing nestOnSheets(const std::vector<Region2d>& outlines, const std::vector<st
     turned[i] = fitsOnlyTurned(outlines[i].bounds(), names[i], sheet);
     items.emplace_back(nestingContour(outlines[i], turned[i]), ClipperLib::Paths{});
   }
-  NestConfig<NfpPlacer, FirstFitSelection> config;
-  config.placer_config.rotations = {0.0};
-  if (sheet.rotate) config.placer_config.rotations = {0.0, Pi / 2, Pi, 3 * Pi / 2};
-  config.placer_config.alignment = NfpPlacer::Config::Alignment::BOTTOM_LEFT;
-  config.placer_config.starting_point = NfpPlacer::Config::Alignment::BOTTOM_LEFT;
-  // One thread: the result must not depend on which thread finishes first.
-  config.placer_config.parallel = false;
-  // Fewer candidate positions per item than libnest2d's 0.65: the same sheet counts on
-  // spot, rocker-arm, bunny-lowres and fandisk, in 60-90 % of the time.
-  config.placer_config.accuracy = 0.3f;
   // libnest2d grows every item by half the spacing, the bin too: widen the bin by as much
   // so the paper keeps exactly `margin` from the sheet's edges.
   const double edge = sheet.margin - sheet.spacing / 2;
   const Box bin({units(edge), units(edge)}, {units(sheet.width - edge), units(sheet.height - edge)});
-  const size_t bins = nest(items, bin, units(sheet.spacing), config);
+  const size_t bins = askEverySheet ? nestWith<FirstFitSelection>(items, bin, sheet, {})
+                                    : nestWith<FirstFitSkipping<PolygonImpl>>(
+                                          items, bin, sheet, [&](const auto& placed, const Item& part) {
+                                            return roomFor(bin, placed, part, sheet.rotate ? 4 : 1);
+                                          });
 
   Packing packing;
   packing.sheets = static_cast<int>(bins);

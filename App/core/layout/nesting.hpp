@@ -38,9 +38,12 @@ struct Packing {
   double utilisation = 0;             // paper area / (sheets x sheet area)
 };
 
-// Throws BadParameter naming the first outline that fits no sheet.
+// Throws BadParameter naming the first outline that fits no sheet. `askEverySheet`: with
+// libnest2d's own first-fit selection, which asks every sheet's placer for every patch
+// (the same placements, slower: for tests); else a sheet where the patch has no room is
+// not asked (layout/first_fit.hpp).
 Packing nestOnSheets(const std::vector<Region2d>& outlines, const std::vector<std::string>& names,
-                     const SheetSpec& sheet);
+                     const SheetSpec& sheet, bool askEverySheet = false);
 Packing shelfPack(const std::vector<Region2d>& outlines, const std::vector<std::string>& names,
                   const SheetSpec& sheet);
 
