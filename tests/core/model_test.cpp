@@ -2,11 +2,13 @@
 // Model reading: OCCT sample files, OFF files, and every way a file can be unusable.
 #include <gtest/gtest.h>
 
+#include <BRepBndLib.hxx>
 #include <BRepBuilderAPI_MakeFace.hxx>
 #include <BRepPrimAPI_MakeBox.hxx>
 #include <BRepTools.hxx>
 #include <BRep_Builder.hxx>
 #include <BRep_Tool.hxx>
+#include <Bnd_Box.hxx>
 #include <TopExp.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopTools_IndexedDataMapOfShapeListOfShape.hxx>
@@ -78,6 +80,34 @@ TEST(Model, ReadsOcctSampleFiles) {
   // Welding found the shared corners: far fewer vertices than 3 per triangle.
   EXPECT_LT(stl.mesh.vertices.size(), stl.mesh.triangles.size());
   expectBadInput([&] { requireClosed(stl); }, "not closed");
+}
+
+// A model's bounds are OCCT's optimal box of its geometry, to the bit, though the search is
+// run only on the faces that may reach a side (model.cpp, exactBounds): free-form and
+// curved parts, one whose edges claim 0.5 mm, and occt-misc parts with loose tolerances
+// (MODERN_Sink_1: 3 mm) and with most of their faces inside (Bottom, Top).
+TEST(Model, BoundsAreTheOptimalBoxOfTheGeometry) {
+  const auto expectOptimal = [](const Model& m) {
+    SCOPED_TRACE(m.source);
+    Bnd_Box box;
+    BRepBndLib::AddOptimal(m.shape, box, Standard_False);
+    double x0, y0, z0, x1, y1, z1;
+    box.Get(x0, y0, z0, x1, y1, z1);
+    EXPECT_EQ(m.bounds.min.x, x0);
+    EXPECT_EQ(m.bounds.min.y, y0);
+    EXPECT_EQ(m.bounds.min.z, z0);
+    EXPECT_EQ(m.bounds.max.x, x1);
+    EXPECT_EQ(m.bounds.max.y, y1);
+    EXPECT_EQ(m.bounds.max.z, z1);
+  };
+  const TopoDS_Shape loose = test::makeTorus(10, 3);
+  test::loosen(loose, 0.5);
+  for (const TopoDS_Shape& shape : {test::loft(), test::boredLoft(), test::makeTorus(10, 3), loose,
+                                    test::makeBoxWithHoles(40, 30, 20, {{10, 10, 4}, {28, 18, 6}})})
+    expectOptimal(modelFromShape(shape, "test solid"));
+  if (!std::filesystem::is_directory(kData)) GTEST_SKIP() << kData << " is not installed";
+  for (const char* part : {"Bottom.brep", "Top.brep", "MODERN_Sink_1.brep", "Ball.brep"})
+    expectOptimal(readModel(kData + "/occ/" + part));
 }
 
 // Edges of `shape` used by a single face (seams and degenerate edges excepted).

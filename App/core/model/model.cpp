@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 #include "model/model.hpp"
 
+#include <BRepAdaptor_Curve.hxx>
 #include <BRepBndLib.hxx>
 #include <BRepBuilderAPI_MakeSolid.hxx>
 #include <BRepBuilderAPI_Transform.hxx>
@@ -22,6 +23,7 @@
 #include <TopoDS.hxx>
 #include <TopoDS_Compound.hxx>
 #include <TopoDS_Edge.hxx>
+#include <TopoDS_Vertex.hxx>
 
 #include <boost/pending/disjoint_sets.hpp>
 
@@ -42,11 +44,35 @@
 namespace sliceform {
 namespace {
 
+// What the shape reaches for sure: its vertices and 17 points along each edge's curve. Each
+// lies on the shape within the largest tolerance it claims, returned in `slack`.
+Bnd_Box reached(const TopoDS_Shape& shape, double& slack) {
+  Bnd_Box box;
+  slack = 0;
+  for (TopExp_Explorer ex(shape, TopAbs_VERTEX); ex.More(); ex.Next()) {
+    const TopoDS_Vertex& v = TopoDS::Vertex(ex.Current());
+    box.Add(BRep_Tool::Pnt(v));
+    slack = std::max(slack, BRep_Tool::Tolerance(v));
+  }
+  for (TopExp_Explorer ex(shape, TopAbs_EDGE); ex.More(); ex.Next()) {
+    const TopoDS_Edge& e = TopoDS::Edge(ex.Current());
+    slack = std::max(slack, BRep_Tool::Tolerance(e));
+    if (BRep_Tool::Degenerated(e)) continue;
+    const BRepAdaptor_Curve c(e);
+    for (int i = 0; i <= 16; ++i)
+      box.Add(c.Value(c.FirstParameter() + i * (c.LastParameter() - c.FirstParameter()) / 16));
+  }
+  return box;
+}
+
 // BRepBndLib::AddOptimal on the geometry, not the triangulation, face by face on every core.
 // It bounds each face on its own and takes the union (then the edges outside faces and the
 // vertices outside edges), so the union of its boxes for each face is the box it gives for
 // the shape, to the bit. Its global search on curved faces was most of reading a CAD part
-// (occ/Top.brep: 2.0 of 2.9 s, tori and B-splines).
+// (occ/Top.brep: 2.0 of 2.9 s, tori and B-splines). A part whose plain box (BRepBndLib::Add:
+// a B-spline's poles, a conic's whole arc) lies inside what the shape surely reaches, by
+// more than the shape's largest tolerance and 10 µm, sets no side of the union and is not
+// searched (occ/Bottom.brep: 41 of 323 faces searched, reading 0.94 -> 0.46 s).
 Bnd_Box exactBounds(const TopoDS_Shape& shape) {
   std::vector<TopoDS_Shape> parts;
   for (TopExp_Explorer ex(shape, TopAbs_FACE); ex.More(); ex.Next()) parts.push_back(ex.Current());
@@ -54,9 +80,26 @@ Bnd_Box exactBounds(const TopoDS_Shape& shape) {
     parts.push_back(ex.Current());
   for (TopExp_Explorer ex(shape, TopAbs_VERTEX, TopAbs_EDGE); ex.More(); ex.Next())
     parts.push_back(ex.Current());
+  double slack = 0;
+  const Bnd_Box sure = reached(shape, slack);
+  const double margin = slack + 0.01;
+  // Whether the part's plain box lies inside `sure` by more than `margin` on every side.
+  const auto within = [&](const TopoDS_Shape& part) {
+    Bnd_Box plain;
+    BRepBndLib::Add(part, plain, Standard_False);
+    if (plain.IsVoid() || sure.IsVoid()) return false;
+    double a[6], b[6];
+    plain.Get(a[0], a[1], a[2], a[3], a[4], a[5]);
+    sure.Get(b[0], b[1], b[2], b[3], b[4], b[5]);
+    for (int i = 0; i < 3; ++i)
+      if (!(a[i] > b[i] + margin && a[i + 3] < b[i + 3] - margin)) return false;
+    return true;
+  };
   std::vector<Bnd_Box> boxes(parts.size());
   parallelFor(parts.size(), [&](size_t k) {
-    occtGuard("measuring the shape", [&] { BRepBndLib::AddOptimal(parts[k], boxes[k], Standard_False); });
+    occtGuard("measuring the shape", [&] {
+      if (!within(parts[k])) BRepBndLib::AddOptimal(parts[k], boxes[k], Standard_False);
+    });
   });
   Bnd_Box box;
   for (const Bnd_Box& b : boxes)
