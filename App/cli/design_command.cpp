@@ -264,7 +264,8 @@ void runDesign(DesignOptions o) {
     DirectionChoice other;
     std::optional<Design> turned;
     try {
-      turned = designInBestFrame(model, o.params, other, std::ref(bar), ready, &deadline);
+      turned = designInBestFrame(model, o.params, other, std::ref(bar), ready, &deadline, nullptr,
+                                 given ? &*given : nullptr);
     } catch (const Error& e) {
       if (e.kind() != ErrorKind::Unbuildable && e.kind() != ErrorKind::BadInput) throw;
     }

@@ -151,5 +151,29 @@ TEST(Directions, AnEditTheEstimatesDoNotReadTakesThemAndGivesTheFreshDesign) {
   EXPECT_FALSE(resliced.estimatesTaken);
 }
 
+// A frame designed already (the file's axes, which the CLI designs first and which may
+// rank first among the frames: Motor-c.brep) is not designed again: its trial takes the
+// design given, and the result is the one designing it gives.
+TEST(Directions, AFrameDesignedAlreadyIsNotDesignedAgain) {
+  const Model model = modelFromShape(table(), "table");
+  DirectionChoice plain;
+  const Design a = designInBestFrame(model, coarse(), plain);
+  DesignParams p = coarse();
+  p.arrangement.u = plain.trials[plain.chosen].u, p.arrangement.v = plain.trials[plain.chosen].v;
+  const Design made = designPatches(model, p);
+  DirectionChoice reused;
+  const Design b = designInBestFrame(model, coarse(), reused, {}, {}, nullptr, nullptr, &made);
+  ASSERT_EQ(reused.chosen, plain.chosen);
+  EXPECT_EQ(reportJson(model, p, b).dump(), reportJson(model, p, a).dump());
+  // What the trial reads is the design given: marked as out of time, it cannot be built.
+  Design marked = made;
+  marked.grazes.timedOut = true;
+  DirectionChoice taken;
+  designInBestFrame(model, coarse(), taken, {}, {}, nullptr, nullptr, &marked);
+  EXPECT_TRUE(taken.trials[plain.chosen].designed);
+  EXPECT_FALSE(taken.trials[plain.chosen].buildable);
+  EXPECT_NE(taken.chosen, plain.chosen);
+}
+
 }  // namespace
 }  // namespace sliceform

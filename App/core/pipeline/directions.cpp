@@ -278,7 +278,7 @@ std::vector<FrameTrial> candidateFrames(const Model& model) {
 
 Design designInBestFrame(const Model& model, DesignParams params, DirectionChoice& choice,
                          const Progress& progress, const PatchesReady& patchesReady,
-                         const Deadline* runDeadline, const Design* earlier) {
+                         const Deadline* runDeadline, const Design* earlier, const Design* made) {
   const Deadline own(runDeadline ? 0 : params.timeLimit);
   const Deadline& deadline = runDeadline ? *runDeadline : own;
   const auto start = std::chrono::steady_clock::now();
@@ -354,7 +354,10 @@ Design designInBestFrame(const Model& model, DesignParams params, DirectionChoic
     p.arrangement.u = t.u, p.arrangement.v = t.v;
     ++attempted;
     try {
-      Design d = designPatches(model, p, progress, &deadline, earlier);
+      // The same design again, where it was made already (Motor-c.brep: the file's axes rank
+      // first, 15 s).
+      const bool known = made && made->arrangement.params.u == t.u && made->arrangement.params.v == t.v;
+      Design d = known ? *made : designPatches(model, p, progress, &deadline, earlier);
       t.designed = true;
       t.buildable = designProblems(d).empty();
       t.quality = d.arrangement.quality;

@@ -24,9 +24,13 @@ bool standsUp(const Mesh& mesh, const Vec3& up);
 // The design in the best frame; `choice` gets every frame tried. `params.arrangement.u/v`
 // are ignored. Throws the best frame's error when no frame gives a design. `earlier`: a
 // design of the same model, whose first stages the full design takes where they match
-// (runDesign), as when a FreeCAD edit keeps the frame chosen before.
+// (runDesign), as when a FreeCAD edit keeps the frame chosen before. `made`: a design
+// of the same model with these parameters in one frame, not laid out (designPatches; the
+// file's axes the CLI tried first): a trial in exactly its frame takes a copy of it instead
+// of designing it again.
 Design designInBestFrame(const Model& model, DesignParams params, DirectionChoice& choice,
                          const Progress& progress = {}, const PatchesReady& patchesReady = {},
-                         const Deadline* deadline = nullptr, const Design* earlier = nullptr);
+                         const Deadline* deadline = nullptr, const Design* earlier = nullptr,
+                         const Design* made = nullptr);
 
 }  // namespace sliceform
