@@ -232,9 +232,10 @@ bool surfaceCurves(const BRepAdaptor_Surface& s, const gp_Pln& plane, const Bnd_
 
 // The foot of `p` on `curve` by Newton's method on the squared distance, from `t`, where
 // that comes nearer. ElCLib's parameter of a point off a conic is not its nearest point's:
-// on an ellipse the offset across the major axis counts the radii's ratio times (a plane
-// nearly along a cylinder's axis on occ/Top.brep: 314 times, and a crossing 4 nm off the
-// cylinder read as 1.2 µm off its section, which refused the plane).
+// on an ellipse the offset across the major axis counts as many times over as the point
+// lies further along the ellipse than the minor radius, up to the radii's ratio (a plane
+// nearly along a cylinder's axis on occ/Top.brep: an ellipse 8972 x 28.6 mm, and a crossing
+// 4 nm off the cylinder read as 1.2 µm off its section, which refused the plane).
 double foot(const Geom_Curve& curve, const gp_Pnt& p, double t) {
   double best = curve.Value(t).SquareDistance(p);
   for (int i = 0; i < 8; ++i) {
