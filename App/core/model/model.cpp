@@ -83,14 +83,16 @@ Bnd_Box exactBounds(const TopoDS_Shape& shape) {
   double slack = 0;
   const Bnd_Box sure = reached(shape, slack);
   const double margin = slack + 0.01;
+  double b[6];
+  if (!sure.IsVoid()) sure.Get(b[0], b[1], b[2], b[3], b[4], b[5]);
   // Whether the part's plain box lies inside `sure` by more than `margin` on every side.
   const auto within = [&](const TopoDS_Shape& part) {
+    if (sure.IsVoid()) return false;
     Bnd_Box plain;
     BRepBndLib::Add(part, plain, Standard_False);
-    if (plain.IsVoid() || sure.IsVoid()) return false;
-    double a[6], b[6];
+    if (plain.IsVoid()) return false;
+    double a[6];
     plain.Get(a[0], a[1], a[2], a[3], a[4], a[5]);
-    sure.Get(b[0], b[1], b[2], b[3], b[4], b[5]);
     for (int i = 0; i < 3; ++i)
       if (!(a[i] > b[i] + margin && a[i + 3] < b[i + 3] - margin)) return false;
     return true;

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
-// TracedFace on a face not bounded by its parameter box: each contour cut where it crosses
-// the face's boundary, the pieces inside kept (slicing/traced_section.hpp).
+// TracedFace's boundary: each contour cut where it crosses the face's edges (or ends on
+// one at the parameter box's border), the pieces inside kept (slicing/traced_section.hpp).
 #include <BRepAdaptor_Curve.hxx>
 
 #include <algorithm>
