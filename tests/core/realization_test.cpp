@@ -84,6 +84,39 @@ TEST(Slots, CutterCountsPiecesAsErodingTheSlottedShape) {
       }
 }
 
+// One cutter serves every slot choice the search tries of a patch, and grows each slot
+// once: whatever choices came before, and where grown slots overlap (two slots on one
+// line, slots on lines closer than twice the neck), its count is the one eroding the
+// slotted shape gives.
+TEST(Slots, CutterGrowsEachSlotOnceForEveryChoice) {
+  SlotParams params;  // neck 0.15 mm with no tolerance
+  const double neck = 0.15, crumb = 0.5;
+  const Region2d shape = rect(0, 0, 30, 12);
+  const SlotCutter shared(shape, params, 0);
+  int checked = 0, split = 0;
+  for (int round = 0; round < 2; ++round)
+    for (int k = 0; k <= 12; ++k) {
+      const double gap = 0.05 * k;  // paper between two slots' roots on one line
+      for (const double beside : {0.0, 0.2, 0.6}) {
+        std::vector<SlotCut> cuts = {{8, {-1, 6 - gap / 2}, true, false},
+                                     {8, {6 + gap / 2, 13}, false, true},
+                                     {20, {-1, 5}, true, false}};
+        if (beside > 0) cuts.push_back({20 + params.width() + beside, {4, 13}, false, true});
+        int pieces = 0;
+        const Region2d out = shared.cut(slotRegion(cuts, params), &pieces);
+        const int expected =
+            std::max(static_cast<int>(out.components().size()),
+                     openedPieceCountFull(out, neck, crumb) - openedPieceCountFull(shape, neck, crumb) + 1);
+        EXPECT_EQ(pieces, expected) << "gap " << gap << ", beside " << beside << ", round " << round;
+        ++checked;
+        split += pieces > 1;
+      }
+    }
+  EXPECT_EQ(checked, 78);
+  EXPECT_GT(split, 0);        // some choices cut the patch through...
+  EXPECT_LT(split, checked);  // ...and some do not
+}
+
 // The search keeps patch states computed for earlier moves and computes them on both
 // cores; the ones it ends with must be exactly what the final slots give afresh.
 void expectStatesMatchSlots(const RealizationInput& in, const Realization& r) {

@@ -170,6 +170,19 @@ Region2d Region2d::fromPaths(const Paths& paths, FillRule rule) {
   return region;
 }
 
+Region2d Region2d::overlaid(const std::vector<Region2d>& regions) {
+  Region2d r;
+  for (const Region2d& region : regions)
+    r.paths_.insert(r.paths_.end(), region.paths_.begin(), region.paths_.end());
+  return r;
+}
+
+std::vector<Region2d> Region2d::loopsApart() const {
+  std::vector<Region2d> out(paths_.size());
+  for (size_t i = 0; i < paths_.size(); ++i) out[i].paths_ = {paths_[i]};
+  return out;
+}
+
 Region2d Region2d::uniteAtOnce(const std::vector<Region2d>& regions) {
   Paths all;
   for (const Region2d& r : regions) all.insert(all.end(), r.paths_.begin(), r.paths_.end());

@@ -41,6 +41,12 @@ class Region2d {
   // The union of all of them in one sweep over every loop: for a few regions that barely
   // touch (uniteAll pairs them up, which pays for many similar ones).
   static Region2d uniteAtOnce(const std::vector<Region2d>& regions);
+  // The regions' loops together, not united: where they overlap, the Booleans (which fill
+  // by the non-zero rule) read them as one. For loops that seldom overlap, a union first
+  // would cost a sweep over all of them for nothing.
+  static Region2d overlaid(const std::vector<Region2d>& regions);
+  // Each loop alone, as it is, a region of its own: a region without holes in its pieces.
+  std::vector<Region2d> loopsApart() const;
 
   // The integer polygons themselves, for tests that compare results bit for bit.
   const ClipperLib::Paths& paths() const { return paths_; }

@@ -425,10 +425,36 @@ int SlotCutter::countPieces(const Region2d& slots, int kept, std::vector<Region2
   // differ only in how round corners are cut into chords (1 µm), so the count could differ
   // from eroding the slotted shape only on a bridge within microns of the neck.
   std::vector<Part> parts;
-  for (Region2d& piece : erodedShape_.subtractComponentsRaw(slots.offset(neck_)))
+  for (Region2d& piece : erodedShape_.subtractComponentsRaw(grownSlots(slots)))
     parts.push_back(makePart(std::move(piece)));
   const int opened = countOpenedParts(parts, neck_, crumb_, kSliverCrumbs * crumb_, slivers);
   return std::max(kept, opened - shapePieces_ + 1);
+}
+
+Region2d SlotCutter::grownSlots(const Region2d& slots) const {
+  // Slots enclose no paper of their own; a hole among them would not grow alone.
+  if (slots.holeCount() > 0) return slots.offset(neck_);
+  // Bounds the slots kept: a repair's searches move patches, and with them their slots.
+  constexpr size_t kMaxGrown = 4096;
+  std::vector<Region2d> grown = slots.loopsApart();
+  for (Region2d& slot : grown) {
+    std::vector<double> key;
+    for (const Region2d::Loop& loop : slot.loops())
+      for (const Vec2& v : loop) key.insert(key.end(), {v.x, v.y});
+    {
+      std::lock_guard<std::mutex> lock(grownMutex_);
+      const auto it = grown_.find(key);
+      if (it != grown_.end()) {
+        slot = it->second;
+        continue;
+      }
+    }
+    slot = slot.offset(neck_);
+    std::lock_guard<std::mutex> lock(grownMutex_);
+    if (grown_.size() >= kMaxGrown) grown_.clear();
+    grown_.emplace(std::move(key), slot);
+  }
+  return Region2d::overlaid(grown);
 }
 
 }  // namespace sliceform
