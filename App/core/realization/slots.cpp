@@ -395,7 +395,9 @@ Region2d SlotCutter::keep(const Region2d& cleared, int* kept) const {
   for (Region2d& piece : shape_.subtractComponents(cleared))
     if (piece.area() >= crumb_) pieces.push_back(std::move(piece));
   *kept = static_cast<int>(pieces.size());
-  return pieces.size() == 1 ? pieces.front() : Region2d::uniteAll(pieces);
+  // Pieces of one difference are apart already: laid side by side, not united again (a
+  // search tries many split choices; Motor-c: a tenth of its cuts' time).
+  return pieces.size() == 1 ? pieces.front() : Region2d::overlaid(pieces);
 }
 
 Region2d SlotCutter::cut(const Region2d& slots, int* pieces) const {
