@@ -208,6 +208,32 @@ TEST(Region2d, IntervalsOnLineThroughVertices) {
   EXPECT_DOUBLE_EQ(iv[0].hi, 2.0);
 }
 
+// All lines in one pass give what each line alone gives, to the bit: through vertices, along
+// edges, outside, unsorted and twice the same line, on a region with a hole, an island and
+// irregular edges.
+TEST(Region2d, IntervalsOnVerticalLinesAreEachLinesToTheBit) {
+  const Region2d r = Region2d::fromLoops({{{0, -2}, {3, 0}, {7.3, 0.4}, {9.1, 6.7}, {4, 5}, {0, 2}, {-3, 0}},
+                                          rect(4, 1, 6, 3, true),
+                                          rect(4.5, 1.5, 5.5, 2.5)},
+                                         FillRule::NonZero);
+  std::vector<double> xs{5, 0, -3, 3, 9.1, 9.2, -4, 4, 4.5, 5, 7.3};
+  for (int k = 0; k < 200; ++k) xs.push_back(-3.5 + 0.0637 * k);
+  const std::vector<std::vector<Interval>> all = r.intervalsOnVerticalLines(xs);
+  ASSERT_EQ(all.size(), xs.size());
+  int crossed = 0;
+  for (size_t k = 0; k < xs.size(); ++k) {
+    const std::vector<Interval> one = r.intervalsOnLine({xs[k], 0}, {0, 1});
+    ASSERT_EQ(all[k].size(), one.size()) << "x = " << xs[k];
+    for (size_t i = 0; i < one.size(); ++i) {
+      EXPECT_EQ(all[k][i].lo, one[i].lo) << "x = " << xs[k];
+      EXPECT_EQ(all[k][i].hi, one[i].hi) << "x = " << xs[k];
+    }
+    crossed += one.size() > 1;  // through the hole: two intervals, or three past the island
+  }
+  EXPECT_GT(crossed, 10);
+  EXPECT_TRUE(all[6].empty());  // x = -4 misses the region
+}
+
 TEST(Region2d, HoleCount) {
   const Region2d two = Region2d::fromLoops({rect(0, 0, 10, 4), rect(1, 1, 3, 3), rect(6, 1, 8, 3)});
   EXPECT_EQ(two.holeCount(), 2);

@@ -9,18 +9,9 @@ namespace {
 // Intervals of `section` along the vertical lines of every slice of `other`.
 std::vector<std::vector<Interval>> onLines(const Region2d& section, const SliceFrame& frame,
                                            const SliceSet& other) {
-  std::vector<std::vector<Interval>> out;
-  out.reserve(other.slices.size());
-  const Box2 box = section.bounds();
-  for (const Slice& s : other.slices) {
-    const double x = lineX(frame, other.frame, s.position);
-    if (box.empty || x < box.min.x || x > box.max.x) {
-      out.emplace_back();
-      continue;
-    }
-    out.push_back(section.intervalsOnLine({x, 0}, {0, 1}));
-  }
-  return out;
+  std::vector<double> xs;
+  for (const Slice& s : other.slices) xs.push_back(lineX(frame, other.frame, s.position));
+  return section.intervalsOnVerticalLines(xs);
 }
 
 }  // namespace

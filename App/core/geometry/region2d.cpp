@@ -383,28 +383,62 @@ Region2d Region2d::boxCentres(Vec2 half, const Box2& window, const std::vector<B
   return fromPaths(room, FillRule::NonZero);
 }
 
-std::vector<Interval> Region2d::intervalsOnLine(Vec2 point, Vec2 dir) const {
-  // Half-open side test (s > 0 versus s <= 0) so a vertex exactly on the line is counted
-  // once and edges along the line not at all: the crossings always pair up.
-  std::vector<double> ts;
-  for (const ClipperLib::Path& path : paths_) {
-    const size_t n = path.size();
-    for (size_t i = 0; i < n; ++i) {
-      const Vec2 a{toMm(path[i].X) - point.x, toMm(path[i].Y) - point.y};
-      const Vec2 b{toMm(path[(i + 1) % n].X) - point.x, toMm(path[(i + 1) % n].Y) - point.y};
-      const double sa = dir.x * a.y - dir.y * a.x;
-      const double sb = dir.x * b.y - dir.y * b.x;
-      if ((sa > 0) == (sb > 0)) continue;
-      const double f = sa / (sa - sb);
-      const Vec2 c{a.x + f * (b.x - a.x), a.y + f * (b.y - a.y)};
-      ts.push_back(c.x * dir.x + c.y * dir.y);
-    }
-  }
+namespace {
+
+// Where the edge p-q crosses the line point + t * dir, as t; false when it does not. The
+// side test is half-open (s > 0 versus s <= 0) so a vertex exactly on the line is counted
+// once and edges along the line not at all: the crossings always pair up.
+bool crossing(IntPoint p, IntPoint q, Vec2 point, Vec2 dir, double& t) {
+  const Vec2 a{Region2d::toMm(p.X) - point.x, Region2d::toMm(p.Y) - point.y};
+  const Vec2 b{Region2d::toMm(q.X) - point.x, Region2d::toMm(q.Y) - point.y};
+  const double sa = dir.x * a.y - dir.y * a.x;
+  const double sb = dir.x * b.y - dir.y * b.x;
+  if ((sa > 0) == (sb > 0)) return false;
+  const double f = sa / (sa - sb);
+  const Vec2 c{a.x + f * (b.x - a.x), a.y + f * (b.y - a.y)};
+  t = c.x * dir.x + c.y * dir.y;
+  return true;
+}
+
+std::vector<Interval> paired(std::vector<double>& ts) {
   std::sort(ts.begin(), ts.end());
   std::vector<Interval> out;
-  for (size_t i = 0; i + 1 < ts.size(); i += 2) {
+  for (size_t i = 0; i + 1 < ts.size(); i += 2)
     if (ts[i + 1] > ts[i]) out.push_back({ts[i], ts[i + 1]});
-  }
+  return out;
+}
+
+}  // namespace
+
+std::vector<Interval> Region2d::intervalsOnLine(Vec2 point, Vec2 dir) const {
+  std::vector<double> ts;
+  double t = 0;
+  for (const ClipperLib::Path& path : paths_)
+    for (size_t i = 0, n = path.size(); i < n; ++i)
+      if (crossing(path[i], path[(i + 1) % n], point, dir, t)) ts.push_back(t);
+  return paired(ts);
+}
+
+std::vector<std::vector<Interval>> Region2d::intervalsOnVerticalLines(const std::vector<double>& xs) const {
+  std::vector<size_t> order(xs.size());
+  for (size_t k = 0; k < order.size(); ++k) order[k] = k;
+  std::sort(order.begin(), order.end(), [&](size_t a, size_t b) { return xs[a] < xs[b]; });
+  std::vector<double> sorted;
+  for (const size_t k : order) sorted.push_back(xs[k]);
+  std::vector<std::vector<double>> ts(xs.size());
+  double t = 0;
+  for (const ClipperLib::Path& path : paths_)
+    for (size_t i = 0, n = path.size(); i < n; ++i) {
+      const IntPoint p = path[i], q = path[(i + 1) % n];
+      // The edge crosses the lines with lo < x <= hi, its ends on both sides (crossing()'s
+      // test on x = c: s > 0 where the end lies left of c).
+      const double lo = std::min(toMm(p.X), toMm(q.X)), hi = std::max(toMm(p.X), toMm(q.X));
+      const auto end = std::upper_bound(sorted.begin(), sorted.end(), hi);
+      for (auto it = std::upper_bound(sorted.begin(), sorted.end(), lo); it < end; ++it)
+        if (crossing(p, q, {*it, 0}, {0, 1}, t)) ts[order[it - sorted.begin()]].push_back(t);
+    }
+  std::vector<std::vector<Interval>> out(xs.size());
+  for (size_t k = 0; k < xs.size(); ++k) out[k] = paired(ts[k]);
   return out;
 }
 

@@ -96,6 +96,8 @@ class Region2d {
   // intervals of t in mm. For a slice frame whose y axis is W and the vertical line
   // x = c, this gives the W-intervals a hinge at c can use.
   std::vector<Interval> intervalsOnLine(Vec2 point, Vec2 dir) const;
+  // intervalsOnLine({x, 0}, {0, 1}) for every x, to the bit, in one pass over the edges.
+  std::vector<std::vector<Interval>> intervalsOnVerticalLines(const std::vector<double>& xs) const;
 
   // Shoelace area of one loop, mm²: positive for an outer loop, negative for a hole.
   static double signedArea(const Loop& loop);

@@ -194,12 +194,14 @@ class Search {
     st->cuts = planSlots(*lines_[p], patchHinges(in_, slots, p), params_);
     st->slotted = cutters_[p]->cut(slotRegion(st->cuts, params_), &st->pieces);
     st->holes = holeLoops(st->slotted, ps.position);
-    for (const int h : hingesOf_[p]) {
-      const ScaffoldHinge& hinge = in_.hinges[h];
-      const double x = lineX(in_.frames[ps.family], in_.frames[other(ps.family)],
-                             in_.patches[hinge.patch(other(ps.family))].position);
+    std::vector<double> xs;
+    for (const int h : hingesOf_[p])
+      xs.push_back(lineX(in_.frames[ps.family], in_.frames[other(ps.family)],
+                         in_.patches[in_.hinges[h].patch(other(ps.family))].position));
+    const std::vector<std::vector<Interval>> onLines = st->slotted.intervalsOnVerticalLines(xs);
+    for (size_t k = 0; k < xs.size(); ++k) {
       std::vector<double> lengths;
-      for (const Interval& i : intersectIntervals(st->slotted.intervalsOnLine({x, 0}, {0, 1}), {hinge.w}))
+      for (const Interval& i : intersectIntervals(onLines[k], {in_.hinges[hingesOf_[p][k]].w}))
         lengths.push_back(i.hi - i.lo);
       st->onHinge.push_back(std::move(lengths));
     }

@@ -173,8 +173,8 @@ Slot familySlot(Family f, SlotPair pair) {
 }
 
 VerticalLines::VerticalLines(const Region2d& shape, const std::vector<double>& xs) : shape_(&shape) {
-  for (const double x : xs)
-    if (!lines_.count(x)) lines_.emplace(x, shape.intervalsOnLine({x, 0}, {0, 1}));
+  const std::vector<std::vector<Interval>> on = shape.intervalsOnVerticalLines(xs);
+  for (size_t k = 0; k < xs.size(); ++k) lines_.emplace(xs[k], on[k]);
 }
 
 std::vector<Interval> VerticalLines::at(double x) const {
