@@ -436,8 +436,9 @@ int SlotCutter::countPieces(const Region2d& slots, int kept, std::vector<Region2
 Region2d SlotCutter::grownSlots(const Region2d& slots) const {
   // Slots enclose no paper of their own; a hole among them would not grow alone.
   if (slots.holeCount() > 0) return slots.offset(neck_);
-  // Bounds the slots kept: a repair's searches move patches, and with them their slots.
-  constexpr size_t kMaxGrown = 4096;
+  // Bounds the slots kept (about 1 kB each): a repair's searches move patches, and with
+  // them their slots. Top.brep's busiest patch kept 350.
+  constexpr size_t kMaxGrown = 1024;
   std::vector<Region2d> grown = slots.loopsApart();
   for (Region2d& slot : grown) {
     std::vector<double> key;
