@@ -184,9 +184,7 @@ std::vector<Region2d> Region2d::loopsApart() const {
 }
 
 Region2d Region2d::uniteAtOnce(const std::vector<Region2d>& regions) {
-  Paths all;
-  for (const Region2d& r : regions) all.insert(all.end(), r.paths_.begin(), r.paths_.end());
-  return fromPaths(all, FillRule::NonZero);
+  return fromPaths(overlaid(regions).paths_, FillRule::NonZero);
 }
 
 Region2d Region2d::withoutHoles() const {
