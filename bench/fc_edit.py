@@ -17,7 +17,7 @@ import Mesh
 
 from PySide import QtCore
 
-from sliceform_app import feature, making
+from sliceform_app import feature, settling
 
 # FreeCAD 1.0 computes TechDraw's views in threads whose results arrive through Qt's event
 # loop, and freecadcmd 1.0 has no Qt application: without one the views would never be drawn
@@ -76,7 +76,7 @@ def bench(source_edits, directions, clock):
     source, edits = source_edits
     t = time.perf_counter()
     sliceform = feature.makeSliceform(source, Directions=directions)
-    making.settle_views()
+    settling.settle_views()
     out = {"create_s": time.perf_counter() - t, "patches": sliceform.PatchCount, "sheets": sliceform.SheetCount,
            "edits": {}}
     edits = dict({"Thickness": (sliceform, [0.31 + 0.01 * k for k in range(repeat)]),
@@ -96,7 +96,7 @@ def bench(source_edits, directions, clock):
             # inside the edit's Undo step: the property editor closes it right after.
             doc.commitTransaction()
             recompute = time.perf_counter() - t
-            making.settle_views()
+            settling.settle_views()
             drawn = time.perf_counter() - t
             runs.append({"recompute_s": recompute, "drawn_s": drawn, "parts_s": dict(clock.parts),
                          "valid": sliceform.isValid()})

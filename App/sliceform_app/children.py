@@ -28,7 +28,7 @@ syncs them inside the edit's transaction."""
 import FreeCAD
 import Part
 
-from sliceform_app import geometry, lookup
+from sliceform_app import geometry, lookup, settling
 
 QT_TRANSLATE_NOOP = FreeCAD.Qt.QT_TRANSLATE_NOOP
 
@@ -53,6 +53,7 @@ class _Child:
 
     def onDocumentRestored(self, obj):
         self.initProperties(obj)
+        settling.views_restored(lookup.views_of(obj))
 
     def __getstate__(self):
         return {"Type": self.Type}
@@ -106,6 +107,15 @@ def _on_sheet(shapes, sheets):
     return Part.makeCompound(shapes + corners)
 
 
+def _left_over(obj, proxy):
+    """A sheet drawing left over from a larger design, until the sync that follows removes
+    it: emptied where that lets its view draw nothing, so that the sync need not wait for the
+    other views to remove it (settling.py)."""
+    if settling.BLANK_LEFT_OVERS and not settling.empty(obj.Shape):
+        obj.Shape = Part.makeCompound([])
+        proxy.built = None
+
+
 class SheetPatch(_Child):
     """A patch as it lies on its sheet, for the TechDraw view that shows it: the curves that
     cut it out, in sheet millimetres, on the sheet's box (_on_sheet)."""
@@ -123,7 +133,8 @@ class SheetPatch(_Child):
         patches = sliceform.Proxy.flat_patches(sliceform)
         drawing = sliceform.Proxy.sheet_drawings(sliceform).get(patches[patch.Index]["id"]) if patch.Index < len(patches) else None
         if drawing is None:
-            return  # left over from a larger design until the sync that follows removes it
+            _left_over(obj, self)
+            return
         built = (sliceform.Proxy.key, patch.Index)
         if getattr(self, "built", None) == built and not obj.Shape.isNull():
             return
@@ -155,7 +166,8 @@ class Engraving(_Child):
         drawing = sliceform.Proxy.sheet_drawings(sliceform).get(patches[patch.Index]["id"]) if patch.Index < len(patches) else None
         parts = geometry.engraving_parts(drawing) if drawing is not None else []
         if obj.EngravingPart >= len(parts):
-            return  # left over from a larger design until the sync that follows removes it
+            _left_over(obj, self)
+            return
         built = (sliceform.Proxy.key, patch.Index, obj.EngravingPart, geometry.ENGRAVING_VIEW_EDGES)
         if getattr(self, "built", None) == built and not obj.Shape.isNull():
             return

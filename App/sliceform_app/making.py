@@ -2,11 +2,10 @@
 """Making and removing a sliceform's children (children.py): patches, sheet patches,
 engravings, TechDraw pages with their templates and views."""
 import os
-import time
 
 import FreeCAD
 
-from sliceform_app import children, lookup
+from sliceform_app import children, lookup, settling
 
 V = FreeCAD.Vector
 QT_TRANSLATE_NOOP = FreeCAD.Qt.QT_TRANSLATE_NOOP
@@ -88,35 +87,11 @@ def new_view(doc, page, source, name):
     return view
 
 
-def settle_views(seconds=60):
-    """Lets every TechDraw view finish what its threads are doing. FreeCAD 1.0 computes a
-    view's hidden lines, then its faces, in Qt's global thread pool and finishes the job in
-    the view when the result arrives through the event loop; a view removed meanwhile gets
-    that call with no name in the document and throws (std::logic_error through the event
-    loop: headless, a crashed interpreter). FreeCAD 0.20 computes views in the recompute,
-    and this returns at once. User input is not processed while waiting."""
-    try:
-        from PySide import QtCore
-    except ImportError:
-        return
-    app = QtCore.QCoreApplication.instance()
-    if app is None:
-        return
-    pool = QtCore.QThreadPool.globalInstance()
-    deadline = time.monotonic() + seconds
-    while time.monotonic() < deadline:
-        pool.waitForDone(100)
-        # A finished hidden-line pass starts face finding: loop until both are delivered.
-        app.processEvents(QtCore.QEventLoop.ExcludeUserInputEvents)
-        if pool.activeThreadCount() == 0:
-            app.processEvents(QtCore.QEventLoop.ExcludeUserInputEvents)
-            if pool.activeThreadCount() == 0:
-                return
-
-
 def remove_objects(doc, objects):
-    if any(o.TypeId == "TechDraw::DrawViewPart" or o.TypeId == "TechDraw::DrawPage" for o in objects):
-        settle_views()
+    views = [o for o in objects if o.TypeId == "TechDraw::DrawViewPart"]
+    views += [v for o in objects if o.TypeId == "TechDraw::DrawPage" for v in o.Views]
+    if settling.may_be_drawing(views):
+        settling.settle_views()
     names = [o.Name for o in objects]
     for name in names:
         obj = doc.getObject(name)

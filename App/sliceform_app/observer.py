@@ -3,7 +3,7 @@
 children synced (syncing.py) before the transaction closes, as part of the same Undo step."""
 import FreeCAD
 
-from sliceform_app import lookup
+from sliceform_app import lookup, settling
 
 
 class _Observer:
@@ -19,6 +19,8 @@ class _Observer:
     def slotRecomputedObject(self, obj):
         if lookup.proxy_type(obj) == "Sliceform":
             self.pending.add((obj.Document.Name, obj.Name))
+        elif obj.TypeId == "TechDraw::DrawViewPart":
+            settling.view_recomputed(obj)
 
     def slotRecomputedDocument(self, doc):
         from sliceform_app import feature

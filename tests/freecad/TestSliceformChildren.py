@@ -427,8 +427,10 @@ class TestSliceformChildren(unittest.TestCase):
         """TechDraw's face search costs the square of a view's edges, so a patch's engraving
         goes to views of at most geometry.ENGRAVING_VIEW_EDGES edges: here 12, which splits
         every patch's labels. Each part has its view on the patch's page, named ..._Engrave
-        (its DXF layer); when parts are no longer needed an edit removes them."""
-        from sliceform_app import geometry, lookup
+        (its DXF layer); when parts are no longer needed an edit removes them. On FreeCAD
+        1.0, where views draw in threads, the edit empties those parts first, so that their
+        views draw nothing and go without waiting for the views still drawing."""
+        from sliceform_app import geometry, lookup, settling
 
         limit = geometry.ENGRAVING_VIEW_EDGES
         try:
@@ -447,10 +449,19 @@ class TestSliceformChildren(unittest.TestCase):
                 self.assertEqual(view.Label, "{} engraving{}".format(e.Patch.PatchId, " {}".format(e.EngravingPart + 1) if e.EngravingPart else ""))
             self.assertEqual(sliceform.ChildCount, sliceform.PatchCount + sliceform.SheetCount + len(engravings))
             geometry.ENGRAVING_VIEW_EDGES = limit
-            FreeCAD.setActiveTransaction("Thickness")
-            sliceform.Thickness = 0.35
-            self.doc.recompute()
-            FreeCAD.closeActiveTransaction()
+            settling.settle_views()  # the user waits for the sheets to be drawn
+            waits, settle = [], settling.settle_views
+            settling.settle_views = lambda *args: waits.append(args) or settle(*args)
+            try:
+                FreeCAD.setActiveTransaction("Thickness")
+                sliceform.Thickness = 0.35
+                self.doc.recompute()
+                FreeCAD.closeActiveTransaction()
+            finally:
+                settling.settle_views = settle
+            if settling.BLANK_LEFT_OVERS:
+                self.assertEqual(waits, [])
+            settling.settle_views()
             self.check_children(sliceform)
             self.assertEqual([e.EngravingPart for e in lookup.engravings_of(sliceform)], [0] * sliceform.PatchCount)
             left = [o.Name for o in self.doc.Objects if getattr(o, "EngravingPart", 0) > 0]
