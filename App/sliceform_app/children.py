@@ -104,7 +104,10 @@ def _on_sheet(shapes, sheets):
     sheet (TechDraw centres a view on its shape's box: the view then sits at the sheet's
     centre and the page shows the sheet at 1:1)."""
     corners = [Part.Vertex(0, 0, 0), Part.Vertex(sheets["width"], sheets["height"], 0)]
-    return Part.makeCompound(shapes + corners)
+    # Part.Compound, not Part.makeCompound: FreeCAD 1.0's makeCompound names every element
+    # for its topological naming, 1 ms a drawing of 40 strokes against 0.02 ms (72 drawings
+    # in a Slices edit on fandisk); nothing refers to a sheet drawing's elements by name.
+    return Part.Compound(shapes + corners)
 
 
 def _left_over(obj, proxy):
@@ -112,8 +115,9 @@ def _left_over(obj, proxy):
     it: emptied where that lets its view draw nothing, so that the sync need not wait for the
     other views to remove it (settling.py)."""
     if settling.BLANK_LEFT_OVERS and not settling.empty(obj.Shape):
-        obj.Shape = Part.makeCompound([])
+        obj.Shape = Part.Compound([])
         proxy.built = None
+    proxy.blank = True
 
 
 class SheetPatch(_Child):
@@ -139,7 +143,7 @@ class SheetPatch(_Child):
         if getattr(self, "built", None) == built and not obj.Shape.isNull():
             return
         obj.Shape = _on_sheet(geometry.patch_cuts(drawing), sliceform.Proxy.sheets(sliceform))
-        self.built = built
+        self.built, self.blank = built, False
 
 
 class Engraving(_Child):
@@ -172,7 +176,7 @@ class Engraving(_Child):
         if getattr(self, "built", None) == built and not obj.Shape.isNull():
             return
         obj.Shape = _on_sheet(geometry.stroke_shapes(parts[obj.EngravingPart]), sliceform.Proxy.sheets(sliceform))
-        self.built = built
+        self.built, self.blank = built, False
 
 
 def patch_shape(patch, brep):

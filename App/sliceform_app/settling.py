@@ -22,12 +22,20 @@ _timer = None
 
 
 def empty(shape):
-    return shape is None or shape.isNull() or not shape.SubShapes
+    return shape.isNull() or not shape.SubShapes
+
+
+def _blank(source):
+    """Whether the source gives a view nothing to draw. Its Shape is read only where its
+    proxy says it was emptied (children._left_over): reading a Shape copies it (FreeCAD 1.0
+    copies its element map too, 0.5 ms a sheet drawing), and the shape, not the hint, decides
+    (an Undo gives an emptied drawing its shape back and leaves the proxy as it was)."""
+    return getattr(getattr(source, "Proxy", None), "blank", False) and empty(source.Shape)
 
 
 def view_recomputed(view):
     """The document observer's report of a recomputed view."""
-    if not all(empty(getattr(source, "Shape", None)) for source in view.Source):
+    if not all(_blank(source) for source in view.Source):
         _add([view])
 
 
