@@ -2,7 +2,8 @@
 # GUI test of the Sliceform's children (issue 16), run by gui_smoke.sh inside FreeCAD under
 # Xvfb, through the real commands and dialogs: Create; the task panel's Recompute with a
 # new patch and sheet count, then Cancel, restores the document and the Undo stack, and
-# with OK is one Undo step that takes it all back; an edit
+# with OK is one Undo step that takes it all back; once Qt's loop has run the views' threads
+# they no longer count as drawing (a sync removes a view that draws nothing at once); an edit
 # of the source as the property editor makes it, lowering the count, is one Undo step;
 # Delete removes the children and shows the source again, Undo brings all back; after
 # save and reopen no TechDraw page opens by itself, nothing is marked for recompute, the
@@ -111,7 +112,7 @@ def type_into(widget, text):
 try:
     from PySide import QtCore, QtGui
 
-    from sliceform_app import lookup
+    from sliceform_app import lookup, settling
 
     FreeCADGui.activateWorkbench("SliceformWorkbench")
     doc = FreeCAD.newDocument("Children")
@@ -230,6 +231,12 @@ try:
     undone = snapshot(doc, sliceform)
     for key in ("objects", "views", "patches", "results", "touched"):
         assert undone[key] == before[key], "Undo of OK: {} {} -> {}".format(key, before[key], undone[key])
+
+    # The views drawn so far count as settled once Qt's loop has run their threads (the
+    # timer of settling._watch): a sync may then remove a view that draws nothing at once.
+    wait(800)
+    drawn = [v for p in lookup.pages_of(sliceform) for v in p.Views]
+    assert drawn and not settling.may_be_drawing(drawn), "views still counted as drawing"
 
     # 2. The source edited as the property editor does it, lowering the count.
     FreeCAD.setActiveTransaction("Edit Box Height")
