@@ -117,6 +117,55 @@ TEST(Slots, CutterGrowsEachSlotOnceForEveryChoice) {
   EXPECT_LT(split, checked);  // ...and some do not
 }
 
+// The search bounds a move by the cutter's neck test alone (SlotCutter::opened) and finishes
+// the state from it later: the neck test never counts more pieces than cut() where it found
+// no slivers, and cut() given it makes the same bits as cut() alone.
+TEST(Slots, NeckTestBoundsTheCutsCount) {
+  SlotParams params;  // neck 0.15 mm with no tolerance
+  int checked = 0, bounded = 0, slivered = 0;
+  const auto check = [&](const SlotCutter& cutter, const std::vector<SlotCut>& cuts,
+                         const std::string& what) {
+    const Region2d slots = slotRegion(cuts, params);
+    const SlotCutter::Opened opened = cutter.opened(slots);
+    int alone = 0, finished = 0;
+    const Region2d a = cutter.cut(slots, &alone);
+    const Region2d b = cutter.cut(slots, &finished, &opened);
+    EXPECT_EQ(a.paths(), b.paths()) << what;
+    EXPECT_EQ(alone, finished) << what;
+    if (opened.slivers.empty()) {
+      EXPECT_LE(opened.pieces, alone) << what;
+      ++bounded;
+    } else {
+      ++slivered;
+    }
+    ++checked;
+  };
+  // Two slots on one line with a bridge of paper between their roots, and a slot beside.
+  const SlotCutter plain(rect(0, 0, 30, 12), params, 0);
+  for (int k = 0; k <= 12; ++k)
+    for (const double beside : {0.0, 0.2, 0.6}) {
+      const double gap = 0.05 * k;
+      std::vector<SlotCut> cuts = {{8, {-1, 6 - gap / 2}, true, false},
+                                   {8, {6 + gap / 2, 13}, false, true},
+                                   {20, {-1, 5}, true, false}};
+      if (beside > 0) cuts.push_back({20 + params.width() + beside, {4, 13}, false, true});
+      check(plain, cuts, "gap " + std::to_string(gap) + ", beside " + std::to_string(beside));
+    }
+  // A 1.2 mm tab on the right edge; a slot 0.1 mm inside that edge, up to near the tab's
+  // top, leaves the tab held by a bridge of paper thinner than the neck: a sliver, which
+  // cut() trims off when that leaves fewer pieces.
+  const SlotCutter tabbed(rect(0, 0, 30, 12).unite(rect(30, 5, 31.2, 6.2)), params, 0);
+  for (const double root : {5.0, 5.9, 6.0, 6.05, 6.1, 6.3, 7.0})
+    for (const bool second : {false, true}) {
+      std::vector<SlotCut> cuts = {{30 - params.width() / 2 - 0.1, {-1, root}, true, false}};
+      if (second) cuts.push_back({15, {-1, 11.9}, true, false});
+      check(tabbed, cuts, "root " + std::to_string(root) + (second ? ", second slot" : ""));
+    }
+  EXPECT_EQ(checked, 53);
+  EXPECT_GT(bounded, 0);
+  EXPECT_GT(slivered, 0);  // both kinds were checked
+}
+
 // The search keeps patch states computed for earlier moves and computes them on both
 // cores; the ones it ends with must be exactly what the final slots give afresh.
 void expectStatesMatchSlots(const RealizationInput& in, const Realization& r) {

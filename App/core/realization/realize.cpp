@@ -187,12 +187,14 @@ class Search {
   int lockAt(int a, int b) const { return locks_[static_cast<size_t>(a) * n_ + b]; }
 
   // Patch p slotted as `slots` says. A pure function of p and p's own slots (patchKey), so
-  // it may run on any thread and its result may be reused.
-  std::shared_ptr<const PatchState> evaluatePatch(int p, const std::vector<SlotPair>& slots) const {
+  // it may run on any thread and its result may be reused. `opened`: the cutter's neck test
+  // of these slots, when bounds() made it already.
+  std::shared_ptr<const PatchState> evaluatePatch(int p, const std::vector<SlotPair>& slots,
+                                                  const SlotCutter::Opened* opened = nullptr) const {
     const PatchShape& ps = in_.patches[p];
     auto st = std::make_shared<PatchState>();
     st->cuts = planSlots(*lines_[p], patchHinges(in_, slots, p), params_);
-    st->slotted = cutters_[p]->cut(slotRegion(st->cuts, params_), &st->pieces);
+    st->slotted = cutters_[p]->cut(slotRegion(st->cuts, params_), &st->pieces, opened);
     st->holes = holeLoops(st->slotted, ps.position);
     std::vector<double> xs;
     for (const int h : hingesOf_[p])
@@ -230,16 +232,18 @@ class Search {
     std::vector<std::shared_ptr<const PatchState>> out(patches.size());
     std::vector<MemoKey> keys(patches.size());
     std::vector<size_t> missing;
+    std::vector<std::shared_ptr<const SlotCutter::Opened>> opened(patches.size());
     for (size_t i = 0; i < patches.size(); ++i) {
       if (memo_ && in_.patches[patches[i]].cylinder >= 0) {
         keys[i] = memoKey(patches[i], slotsFor(i));
         if ((out[i] = memo_->states.find(keys[i]))) continue;
       }
       missing.push_back(i);
+      opened[i] = opened_.find(patchKey(patches[i], slotsFor(i)));
     }
     parallelFor(missing.size(), [&](size_t m) {
       const size_t i = missing[m];
-      out[i] = evaluatePatch(patches[i], slotsFor(i));
+      out[i] = evaluatePatch(patches[i], slotsFor(i), opened[i].get());
     });
     if (memo_)
       for (const size_t i : missing)
@@ -256,12 +260,11 @@ class Search {
     return key;
   }
 
-  // Evaluates, both cores at once, every patch state the moves need that is not cached yet
-  // (of the patches in `only`, when given). Which states are computed does not depend on
-  // timing, and each is a pure function, so the search stays deterministic.
-  void prepare(const std::vector<Move>& moves, const std::vector<int>& only = {}) {
-    std::vector<PatchKey> keys;
-    std::vector<std::vector<SlotPair>> slotsOf;
+  // The keys and slots of the patch states the moves need that `have` has not (of the
+  // patches in `only`, when given), each once, in the moves' order.
+  template <class Have>
+  void needed(const std::vector<Move>& moves, const std::vector<int>& only, Have&& have,
+              std::vector<PatchKey>& keys, std::vector<std::vector<SlotPair>>& slotsOf) const {
     std::set<PatchKey> queued;
     std::vector<SlotPair> slots = slots_;
     for (const Move& m : moves) {
@@ -270,16 +273,68 @@ class Search {
         for (const int p : {in_.hinges[h].u, in_.hinges[h].v}) {
           if (!only.empty() && std::find(only.begin(), only.end(), p) == only.end()) continue;
           PatchKey key = patchKey(p, slots);
-          if (cache_.contains(key) || !queued.insert(key).second) continue;
+          if (have(key) || !queued.insert(key).second) continue;
           keys.push_back(std::move(key));
           slotsOf.push_back(slots);
         }
       for (const auto& [h, pair] : m) slots[h] = slots_[h];
     }
+  }
+
+  // Evaluates, both cores at once, every patch state the moves need that is not cached yet.
+  // Which states are computed does not depend on timing, and each is a pure function, so
+  // the search stays deterministic.
+  void prepare(const std::vector<Move>& moves) {
+    std::vector<PatchKey> keys;
+    std::vector<std::vector<SlotPair>> slotsOf;
+    needed(
+        moves, {}, [&](const PatchKey& key) { return cache_.contains(key); }, keys, slotsOf);
     std::vector<int> patches;
     for (const PatchKey& key : keys) patches.push_back(key.first);
     std::vector<std::shared_ptr<const PatchState>> states = evaluatePatches(patches, slotsOf, false);
     for (size_t i = 0; i < keys.size(); ++i) cache_.put(std::move(keys[i]), states[i], states[i]->bytes);
+  }
+
+  // What bound() needs of the states of the patches in `own` the moves make: their pieces
+  // from the cutter's neck test alone where no state is cached or in the memo (most moves of
+  // a split patch leave it split, and then the slotted shape itself is never wanted).
+  void prepareBounds(const std::vector<Move>& moves, const std::vector<int>& own) {
+    std::vector<PatchKey> keys;
+    std::vector<std::vector<SlotPair>> slotsOf;
+    needed(
+        moves, own, [&](const PatchKey& key) { return cache_.contains(key) || opened_.contains(key); }, keys,
+        slotsOf);
+    std::vector<size_t> missing;
+    for (size_t i = 0; i < keys.size(); ++i) {
+      const int p = keys[i].first;
+      if (memo_ && in_.patches[p].cylinder >= 0)
+        if (std::shared_ptr<const PatchState> st = memo_->states.find(memoKey(p, slotsOf[i]))) {
+          cache_.put(std::move(keys[i]), st, st->bytes);
+          continue;
+        }
+      missing.push_back(i);
+    }
+    std::vector<std::shared_ptr<const SlotCutter::Opened>> opened(keys.size());
+    parallelFor(missing.size(), [&](size_t m) {
+      const size_t i = missing[m];
+      const int p = keys[i].first;
+      const std::vector<SlotCut> cuts = planSlots(*lines_[p], patchHinges(in_, slotsOf[i], p), params_);
+      opened[i] = std::make_shared<SlotCutter::Opened>(cutters_[p]->opened(slotRegion(cuts, params_)));
+    });
+    for (const size_t i : missing) {
+      size_t bytes = sizeof(SlotCutter::Opened);
+      for (const Region2d& sliver : opened[i]->slivers) bytes += sliver.bytes();
+      opened_.put(std::move(keys[i]), opened[i], bytes);
+    }
+  }
+
+  // At least how many pieces the patch state of `key` has: exact from a cached state, else
+  // from the neck test (prepareBounds). cut() may trim slivers off and count fewer than that
+  // test: where it found slivers, nothing beyond one piece is sure.
+  int piecesAtLeast(const PatchKey& key) {
+    if (std::shared_ptr<const PatchState> st = cache_.find(key)) return st->pieces;
+    const std::shared_ptr<const SlotCutter::Opened> o = opened_.find(key);
+    return o->slivers.empty() ? o->pieces : std::min(1, o->pieces);
   }
 
   // The state of patch p for the current slots, computed when no move asked for it yet.
@@ -482,7 +537,7 @@ class Search {
       s.broken -= state_[p]->pieces > 1 ? 1 : 0;
       s.extraPieces -= std::max(0, state_[p]->pieces - 1);
       if (std::find(known.begin(), known.end(), p) == known.end()) continue;
-      const int pieces = cache_.find(patchKey(p, slots_))->pieces;
+      const int pieces = piecesAtLeast(patchKey(p, slots_));
       s.broken += pieces > 1 ? 1 : 0;
       s.extraPieces += std::max(0, pieces - 1);
     }
@@ -500,12 +555,14 @@ class Search {
   // violation's own patches, cut first. The others are no better than now whatever their
   // partners' states, so those are not cut: the search takes the same steps with fewer
   // cuts (occ/Top.brep: a split patch's flips mostly leave it split, and each would cut a
-  // partner of some 40 hinges).
+  // partner of some 40 hinges). A bound from fewer pieces than a state has (piecesAtLeast)
+  // lets more moves through, never a better one: improve() takes only a move whose score,
+  // of the whole states, beats `now`.
   std::vector<Move> mayImprove(const std::vector<Move>& tier, std::pair<int, int> v, const Score& now) {
     std::vector<int> own;
     for (const int p : {v.first, v.second})
       if (p >= 0) own.push_back(p);
-    prepare(tier, own);
+    prepareBounds(tier, own);
     const std::set<std::pair<int, int>> lost = lostPins();
     std::vector<Move> out;
     for (const Move& m : tier)
@@ -516,6 +573,7 @@ class Search {
   bool improve(std::pair<int, int> v) {
     const Score now = score();
     cache_.age();
+    opened_.age();
     if (memo_) memo_->states.age();
     for (const std::vector<Move>& all : tiers(v)) {
       if (deadline_.passed()) return false;
@@ -613,6 +671,9 @@ class Search {
   // a move since changed (occ/Top.brep: three split patches, 870 states a try, tried again
   // after every accepted move; the search ran out of its 60 s with 38 patches in pieces).
   BoundedCache<PatchKey, PatchState> cache_{kCacheBytes};
+  // The neck tests prepareBounds made, by the same keys and aged with it: piecesAtLeast
+  // reads them, and evaluatePatch finishes a state from one instead of testing again.
+  BoundedCache<PatchKey, SlotCutter::Opened> opened_{kCacheBytes};
   std::vector<int> locks_;                  // interlocked hole pairs, [U-patch * n + V-patch]
   int lockTotal_ = 0, savedLockTotal_ = 0;  // their sum
   int found_ = 0;

@@ -127,7 +127,20 @@ int slottedPieces(const Region2d& shape, const Region2d& slotted, const SlotPara
 class SlotCutter {
  public:
   SlotCutter(const Region2d& shape, const SlotParams& params, double tolerance);
-  Region2d cut(const Region2d& slots, int* pieces) const;
+
+  // What the neck test alone says of the shape less `slots`: its opened pieces beyond those
+  // the shape had, plus one, and the slivers among them. cut() counts at least as many
+  // pieces unless it trims slivers off, which it tries only when there are some and the
+  // patch is in pieces: elsewhere `pieces` is a lower bound of cut()'s count, for a quarter
+  // of a cut's work (the slotted shape is not made).
+  struct Opened {
+    int pieces = 1;
+    std::vector<Region2d> slivers;
+  };
+  Opened opened(const Region2d& slots) const;
+
+  // `known`: opened(slots), when the caller has it already.
+  Region2d cut(const Region2d& slots, int* pieces, const Opened* known = nullptr) const;
 
   // Opened pieces smaller than this many crumbs, once slots are cut, are slivers (cut()).
   static constexpr double kSliverCrumbs = 4;
@@ -135,9 +148,9 @@ class SlotCutter {
  private:
   // The shape less `cleared`, crumbs dropped; `kept` is set to the pieces left.
   Region2d keep(const Region2d& cleared, int* kept) const;
-  // Pieces of the shape less `slots` (`kept` of them at least a crumb) by the neck test;
-  // the opened pieces smaller than kSliverCrumbs crumbs go to `slivers` when it is given.
-  int countPieces(const Region2d& slots, int kept, std::vector<Region2d>* slivers) const;
+  // Opened pieces of the shape less `slots` beyond the shape's own, plus one (the neck
+  // test); those smaller than kSliverCrumbs crumbs go to `slivers` when it is given.
+  int openedPieces(const Region2d& slots, std::vector<Region2d>* slivers) const;
   // The slots grown by neck_, slot by slot (see grown_), overlaid.
   Region2d grownSlots(const Region2d& slots) const;
 
