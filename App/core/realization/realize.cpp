@@ -188,7 +188,7 @@ class Search {
 
   // Patch p slotted as `slots` says. A pure function of p and p's own slots (patchKey), so
   // it may run on any thread and its result may be reused. `opened`: the cutter's neck test
-  // of these slots, when bounds() made it already.
+  // of these slots, when prepareBounds made it already.
   std::shared_ptr<const PatchState> evaluatePatch(int p, const std::vector<SlotPair>& slots,
                                                   const SlotCutter::Opened* opened = nullptr) const {
     const PatchShape& ps = in_.patches[p];
@@ -322,7 +322,9 @@ class Search {
       opened[i] = std::make_shared<SlotCutter::Opened>(cutters_[p]->opened(slotRegion(cuts, params_)));
     });
     for (const size_t i : missing) {
-      size_t bytes = sizeof(SlotCutter::Opened);
+      // The key too: an entry is small, and the cache holds many (Top: 25,565 tests).
+      size_t bytes =
+          sizeof(SlotCutter::Opened) + sizeof(PatchKey) + keys[i].second.size() * sizeof(Slot) + 64;
       for (const Region2d& sliver : opened[i]->slivers) bytes += sliver.bytes();
       opened_.put(std::move(keys[i]), opened[i], bytes);
     }
@@ -552,7 +554,7 @@ class Search {
   }
 
   // The moves of a tier that may improve on `now`, by bound() from the states of the
-  // violation's own patches, cut first. The others are no better than now whatever their
+  // violation's own patches, tested first (prepareBounds). The others are no better than now whatever their
   // partners' states, so those are not cut: the search takes the same steps with fewer
   // cuts (occ/Top.brep: a split patch's flips mostly leave it split, and each would cut a
   // partner of some 40 hinges). A bound from fewer pieces than a state has (piecesAtLeast)

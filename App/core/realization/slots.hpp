@@ -131,8 +131,8 @@ class SlotCutter {
   // What the neck test alone says of the shape less `slots`: its opened pieces beyond those
   // the shape had, plus one, and the slivers among them. cut() counts at least as many
   // pieces unless it trims slivers off, which it tries only when there are some and the
-  // patch is in pieces: elsewhere `pieces` is a lower bound of cut()'s count, for a quarter
-  // of a cut's work (the slotted shape is not made).
+  // patch is in pieces: elsewhere `pieces` is a lower bound of cut()'s count, without the
+  // slotted shape itself (a third of a cut's work on occ/Top.brep).
   struct Opened {
     int pieces = 1;
     std::vector<Region2d> slivers;
