@@ -6,13 +6,14 @@
 #include <limits>
 #include <map>
 #include <memory>
+#include <optional>
 #include <set>
 #include <tuple>
 
 #include "arrangement/arrange.hpp"
 #include "frames/hinge_table.hpp"
 #include "realization/interlock.hpp"
-#include "support/bounded_cache.hpp"
+#include "realization/patch_states.hpp"
 #include "support/parallel.hpp"
 #include "support/per_family.hpp"
 
@@ -20,8 +21,6 @@ namespace sliceform {
 namespace {
 
 constexpr int kMaxCommonHinges = 8;  // 2^8 combinations of one pair's hinges at most
-// Patch states the search keeps for later steps, per generation of its cache (two are kept).
-constexpr size_t kCacheBytes = size_t{48} << 20;
 
 // What the search minimises, in this order.
 struct Score {
@@ -36,7 +35,7 @@ struct Score {
   }
 };
 
-using Move = std::vector<std::pair<int, SlotPair>>;  // (hinge, new combination)
+using Move = SlotMove;
 
 bool isUpDown(SlotPair s) {
   return s == SlotPair::UpDown || s == SlotPair::DownUp;
@@ -61,31 +60,7 @@ double distanceToBoundary(const std::vector<Region2d::Loop>& loops, Vec2 p) {
   return best;
 }
 
-// One patch slotted with one choice of slots: what the search needs to know of it.
-struct PatchState {
-  std::vector<SlotCut> cuts;
-  Region2d slotted;
-  int pieces = 1;
-  HoleLoops holes;
-  // Per hinge of the patch (in hingesOf_ order): the lengths of the hinge segment the
-  // slotted patch still covers, for meets(); read off once here, not at every move.
-  std::vector<std::vector<double>> onHinge;
-  size_t bytes = 0;  // about what it holds, for the search's cache
-};
-
-// A patch state by all it depends on: family, cylinder, position, and its hinges as
-// planSlots sees them (line, segment, root, slot).
-using MemoKey = std::tuple<int, int, double, std::vector<std::tuple<double, double, double, double, int>>>;
-
 }  // namespace
-
-class RealizeMemo {
- public:
-  CutterCache cutters;
-  // Bounded as the search's own cache, and aged at the same steps: the repairs' 24 searches
-  // put every state they cut here (occ/Top.brep: 384 MB at the peak, 165 MB before).
-  BoundedCache<MemoKey, PatchState> states{kCacheBytes};
-};
 
 std::shared_ptr<RealizeMemo> makeRealizeMemo() {
   return std::make_shared<RealizeMemo>();
@@ -97,7 +72,7 @@ class Search {
  public:
   Search(const RealizationInput& in, const SlotParams& params, const Deadline& deadline,
          const std::vector<SlotPair>& start, RealizeMemo* memo)
-      : in_(in), params_(params), deadline_(deadline), memo_(memo), n_(static_cast<int>(in.patches.size())) {
+      : in_(in), params_(params), deadline_(deadline), n_(static_cast<int>(in.patches.size())) {
     hingesOf_.resize(n_);
     hingeIndex_.resize(in.hinges.size());
     for (int h = 0; h < static_cast<int>(in.hinges.size()); ++h) {
@@ -109,20 +84,13 @@ class Search {
                  ? start
                  : std::vector<SlotPair>(in.hinges.size(), params.uUp ? SlotPair::UpDown : SlotPair::DownUp);
     // Each patch's own tools and first state depend on nothing else: both cores at once.
-    cutters_.resize(n_);
-    lines_.resize(n_);
-    cutters_ = patchCutters(in, params, memo_ ? &memo_->cutters : nullptr);
-    parallelFor(static_cast<size_t>(n_), [&](size_t p) {
-      lines_[p] = std::make_unique<VerticalLines>(
-          in.patches[p].shape,
-          VerticalLines::slotLines(patchHinges(in_, slots_, static_cast<int>(p)), params));
-    });
+    states_.emplace(in, params, memo, hingesOf_, slots_);
     locks_.assign(static_cast<size_t>(n_) * n_, 0);
     state_.resize(n_);
     std::vector<int> all(n_);
     for (int p = 0; p < n_; ++p) all[p] = p;
     const std::vector<std::shared_ptr<const PatchState>> first =
-        evaluatePatches(all, std::vector<std::vector<SlotPair>>(1, slots_), true);
+        states_->evaluate(all, std::vector<std::vector<SlotPair>>(1, slots_), true);
     for (int p = 0; p < n_; ++p) state_[p] = first[p];
     for (int p = 0; p < n_; ++p)
       if (in.patches[p].family == Family::U) refreshLocks(p);
@@ -185,168 +153,6 @@ class Search {
 
  private:
   int lockAt(int a, int b) const { return locks_[static_cast<size_t>(a) * n_ + b]; }
-
-  // Patch p slotted as `slots` says. A pure function of p and p's own slots (patchKey), so
-  // it may run on any thread and its result may be reused. `opened`: the cutter's neck test
-  // of these slots, when prepareBounds made it already.
-  std::shared_ptr<const PatchState> evaluatePatch(int p, const std::vector<SlotPair>& slots,
-                                                  const SlotCutter::Opened* opened = nullptr) const {
-    const PatchShape& ps = in_.patches[p];
-    auto st = std::make_shared<PatchState>();
-    st->cuts = planSlots(*lines_[p], patchHinges(in_, slots, p), params_);
-    st->slotted = cutters_[p]->cut(slotRegion(st->cuts, params_), &st->pieces, opened);
-    st->holes = holeLoops(st->slotted, ps.position);
-    std::vector<double> xs;
-    for (const int h : hingesOf_[p])
-      xs.push_back(lineX(in_.frames[ps.family], in_.frames[other(ps.family)],
-                         in_.patches[in_.hinges[h].patch(other(ps.family))].position));
-    const std::vector<std::vector<Interval>> onLines = st->slotted.intervalsOnVerticalLines(xs);
-    for (size_t k = 0; k < xs.size(); ++k) {
-      std::vector<double> lengths;
-      for (const Interval& i : intersectIntervals(onLines[k], {in_.hinges[hingesOf_[p][k]].w}))
-        lengths.push_back(i.hi - i.lo);
-      st->onHinge.push_back(std::move(lengths));
-    }
-    st->bytes = sizeof(PatchState) + st->cuts.size() * sizeof(SlotCut) + st->onHinge.size() * 32;
-    st->bytes += st->slotted.bytes();
-    for (const Region2d::Loop& loop : st->holes.holes) st->bytes += loop.size() * sizeof(Vec2) + 32;
-    st->bytes += st->holes.boxes.size() * sizeof(Box2);
-    return st;
-  }
-
-  MemoKey memoKey(int p, const std::vector<SlotPair>& slots) const {
-    const PatchShape& ps = in_.patches[p];
-    MemoKey key{familyIndex(ps.family), ps.cylinder, ps.position, {}};
-    for (const PatchHinge& h : patchHinges(in_, slots, p))
-      std::get<3>(key).emplace_back(h.x, h.w.lo, h.w.hi, h.root, static_cast<int>(h.slot));
-    return key;
-  }
-
-  // evaluatePatch for patches[i] with slots[i] (or slots[0] for all when `same`), both
-  // cores at once, through the memo when there is one.
-  std::vector<std::shared_ptr<const PatchState>> evaluatePatches(
-      const std::vector<int>& patches, const std::vector<std::vector<SlotPair>>& slots, bool same) {
-    const auto slotsFor = [&](size_t i) -> const std::vector<SlotPair>& {
-      return same ? slots[0] : slots[i];
-    };
-    std::vector<std::shared_ptr<const PatchState>> out(patches.size());
-    std::vector<MemoKey> keys(patches.size());
-    std::vector<size_t> missing;
-    std::vector<std::shared_ptr<const SlotCutter::Opened>> opened(patches.size());
-    for (size_t i = 0; i < patches.size(); ++i) {
-      if (memo_ && in_.patches[patches[i]].cylinder >= 0) {
-        keys[i] = memoKey(patches[i], slotsFor(i));
-        if ((out[i] = memo_->states.find(keys[i]))) continue;
-      }
-      missing.push_back(i);
-      opened[i] = opened_.find(patchKey(patches[i], slotsFor(i)));
-    }
-    parallelFor(missing.size(), [&](size_t m) {
-      const size_t i = missing[m];
-      out[i] = evaluatePatch(patches[i], slotsFor(i), opened[i].get());
-    });
-    if (memo_)
-      for (const size_t i : missing)
-        if (in_.patches[patches[i]].cylinder >= 0)
-          memo_->states.put(std::move(keys[i]), out[i], out[i]->bytes);
-    return out;
-  }
-
-  // What patch p's state depends on: the slot p gets at each of its hinges.
-  using PatchKey = std::pair<int, std::vector<Slot>>;
-  PatchKey patchKey(int p, const std::vector<SlotPair>& slots) const {
-    PatchKey key{p, {}};
-    for (const int h : hingesOf_[p]) key.second.push_back(familySlot(in_.patches[p].family, slots[h]));
-    return key;
-  }
-
-  // The keys and slots of the patch states the moves need that `have` has not (of the
-  // patches in `only`, when given), each once, in the moves' order.
-  template <class Have>
-  void needed(const std::vector<Move>& moves, const std::vector<int>& only, Have&& have,
-              std::vector<PatchKey>& keys, std::vector<std::vector<SlotPair>>& slotsOf) const {
-    std::set<PatchKey> queued;
-    std::vector<SlotPair> slots = slots_;
-    for (const Move& m : moves) {
-      for (const auto& [h, pair] : m) slots[h] = pair;
-      for (const auto& [h, pair] : m)
-        for (const int p : {in_.hinges[h].u, in_.hinges[h].v}) {
-          if (!only.empty() && std::find(only.begin(), only.end(), p) == only.end()) continue;
-          PatchKey key = patchKey(p, slots);
-          if (have(key) || !queued.insert(key).second) continue;
-          keys.push_back(std::move(key));
-          slotsOf.push_back(slots);
-        }
-      for (const auto& [h, pair] : m) slots[h] = slots_[h];
-    }
-  }
-
-  // Evaluates, both cores at once, every patch state the moves need that is not cached yet.
-  // Which states are computed does not depend on timing, and each is a pure function, so
-  // the search stays deterministic.
-  void prepare(const std::vector<Move>& moves) {
-    std::vector<PatchKey> keys;
-    std::vector<std::vector<SlotPair>> slotsOf;
-    needed(
-        moves, {}, [&](const PatchKey& key) { return cache_.contains(key); }, keys, slotsOf);
-    std::vector<int> patches;
-    for (const PatchKey& key : keys) patches.push_back(key.first);
-    std::vector<std::shared_ptr<const PatchState>> states = evaluatePatches(patches, slotsOf, false);
-    for (size_t i = 0; i < keys.size(); ++i) cache_.put(std::move(keys[i]), states[i], states[i]->bytes);
-  }
-
-  // What bound() needs of the states of the patches in `own` the moves make: their pieces
-  // from the cutter's neck test alone where no state is cached or in the memo (most moves of
-  // a split patch leave it split, and then the slotted shape itself is never wanted).
-  void prepareBounds(const std::vector<Move>& moves, const std::vector<int>& own) {
-    std::vector<PatchKey> keys;
-    std::vector<std::vector<SlotPair>> slotsOf;
-    needed(
-        moves, own, [&](const PatchKey& key) { return cache_.contains(key) || opened_.contains(key); }, keys,
-        slotsOf);
-    std::vector<size_t> missing;
-    for (size_t i = 0; i < keys.size(); ++i) {
-      const int p = keys[i].first;
-      if (memo_ && in_.patches[p].cylinder >= 0)
-        if (std::shared_ptr<const PatchState> st = memo_->states.find(memoKey(p, slotsOf[i]))) {
-          cache_.put(std::move(keys[i]), st, st->bytes);
-          continue;
-        }
-      missing.push_back(i);
-    }
-    std::vector<std::shared_ptr<const SlotCutter::Opened>> opened(keys.size());
-    parallelFor(missing.size(), [&](size_t m) {
-      const size_t i = missing[m];
-      const int p = keys[i].first;
-      const std::vector<SlotCut> cuts = planSlots(*lines_[p], patchHinges(in_, slotsOf[i], p), params_);
-      opened[i] = std::make_shared<SlotCutter::Opened>(cutters_[p]->opened(slotRegion(cuts, params_)));
-    });
-    for (const size_t i : missing) {
-      // The key too: an entry is small, and the cache holds many (Top: 25,565 tests).
-      size_t bytes =
-          sizeof(SlotCutter::Opened) + sizeof(PatchKey) + keys[i].second.size() * sizeof(Slot) + 64;
-      for (const Region2d& sliver : opened[i]->slivers) bytes += sliver.bytes();
-      opened_.put(std::move(keys[i]), opened[i], bytes);
-    }
-  }
-
-  // At least how many pieces the patch state of `key` has: exact from a cached state, else
-  // from the neck test (prepareBounds). cut() may trim slivers off and count fewer than that
-  // test: where it found slivers, nothing beyond one piece is sure.
-  int piecesAtLeast(const PatchKey& key) {
-    if (std::shared_ptr<const PatchState> st = cache_.find(key)) return st->pieces;
-    const std::shared_ptr<const SlotCutter::Opened> o = opened_.find(key);
-    return o->slivers.empty() ? o->pieces : std::min(1, o->pieces);
-  }
-
-  // The state of patch p for the current slots, computed when no move asked for it yet.
-  std::shared_ptr<const PatchState> stateOf(int p) {
-    PatchKey key = patchKey(p, slots_);
-    if (auto st = cache_.find(key)) return st;
-    auto st = evaluatePatches({p}, {slots_}, true).front();
-    cache_.put(std::move(key), st, st->bytes);
-    return st;
-  }
 
   void refreshLocks(int p) {
     const bool isU = in_.patches[p].family == Family::U;
@@ -452,7 +258,7 @@ class Search {
     savedPatches_.clear();
     for (const int p : touched) {
       savedPatches_.push_back({p, state_[p]});
-      state_[p] = stateOf(p);
+      state_[p] = states_->of(p, slots_);
     }
     for (const int p : touched) {
       refreshLocks(p);
@@ -539,7 +345,7 @@ class Search {
       s.broken -= state_[p]->pieces > 1 ? 1 : 0;
       s.extraPieces -= std::max(0, state_[p]->pieces - 1);
       if (std::find(known.begin(), known.end(), p) == known.end()) continue;
-      const int pieces = piecesAtLeast(patchKey(p, slots_));
+      const int pieces = states_->piecesAtLeast(states_->key(p, slots_));
       s.broken += pieces > 1 ? 1 : 0;
       s.extraPieces += std::max(0, pieces - 1);
     }
@@ -554,17 +360,17 @@ class Search {
   }
 
   // The moves of a tier that may improve on `now`, by bound() from the states of the
-  // violation's own patches, tested first (prepareBounds). The others are no better than now whatever their
-  // partners' states, so those are not cut: the search takes the same steps with fewer
-  // cuts (occ/Top.brep: a split patch's flips mostly leave it split, and each would cut a
-  // partner of some 40 hinges). A bound from fewer pieces than a state has (piecesAtLeast)
-  // lets more moves through, never a better one: improve() takes only a move whose score,
-  // of the whole states, beats `now`.
+  // violation's own patches, tested first (PatchStates::prepareBounds). The others are no
+  // better than now whatever their partners' states, so those are not cut: the search takes
+  // the same steps with fewer cuts (occ/Top.brep: a split patch's flips mostly leave it
+  // split, and each would cut a partner of some 40 hinges). A bound from fewer pieces than a
+  // state has (piecesAtLeast) lets more moves through, never a better one: improve() takes
+  // only a move whose score, of the whole states, beats `now`.
   std::vector<Move> mayImprove(const std::vector<Move>& tier, std::pair<int, int> v, const Score& now) {
     std::vector<int> own;
     for (const int p : {v.first, v.second})
       if (p >= 0) own.push_back(p);
-    prepareBounds(tier, own);
+    states_->prepareBounds(tier, own, slots_);
     const std::set<std::pair<int, int>> lost = lostPins();
     std::vector<Move> out;
     for (const Move& m : tier)
@@ -574,13 +380,11 @@ class Search {
 
   bool improve(std::pair<int, int> v) {
     const Score now = score();
-    cache_.age();
-    opened_.age();
-    if (memo_) memo_->states.age();
+    states_->age();
     for (const std::vector<Move>& all : tiers(v)) {
       if (deadline_.passed()) return false;
       const std::vector<Move> tier = mayImprove(all, v, now);
-      prepare(tier);
+      states_->prepare(tier, slots_);
       const Move* best = nullptr;
       Score bestScore = now;
       for (const Move& m : tier) {
@@ -659,25 +463,15 @@ class Search {
   const RealizationInput& in_;
   SlotParams params_;
   const Deadline& deadline_;
-  RealizeMemo* memo_;
   bool timedOut_ = false;
   int n_;
   std::vector<std::vector<int>> hingesOf_;
   std::vector<std::pair<size_t, size_t>> hingeIndex_;  // per hinge: its index in hingesOf_ of u, of v
   std::vector<SlotPair> slots_;
-  std::vector<std::unique_ptr<VerticalLines>> lines_;       // per patch: its shape on its hinge lines
-  std::vector<std::shared_ptr<const SlotCutter>> cutters_;  // per patch
-  std::vector<std::shared_ptr<const PatchState>> state_;    // per patch, for slots_
-  // The patch states moves asked for. Kept across steps: a violation no move improved is
-  // tried again whenever its neighbourhood changed, and asks for the same states but the few
-  // a move since changed (occ/Top.brep: three split patches, 870 states a try, tried again
-  // after every accepted move; the search ran out of its 60 s with 38 patches in pieces).
-  BoundedCache<PatchKey, PatchState> cache_{kCacheBytes};
-  // The neck tests prepareBounds made, by the same keys and aged with it: piecesAtLeast
-  // reads them, and evaluatePatch finishes a state from one instead of testing again.
-  BoundedCache<PatchKey, SlotCutter::Opened> opened_{kCacheBytes};
-  std::vector<int> locks_;                  // interlocked hole pairs, [U-patch * n + V-patch]
-  int lockTotal_ = 0, savedLockTotal_ = 0;  // their sum
+  std::optional<PatchStates> states_;                     // each patch with any slots, cut and kept
+  std::vector<std::shared_ptr<const PatchState>> state_;  // per patch, for slots_
+  std::vector<int> locks_;                                // interlocked hole pairs, [U-patch * n + V-patch]
+  int lockTotal_ = 0, savedLockTotal_ = 0;                // their sum
   int found_ = 0;
   std::vector<std::pair<int, SlotPair>> saved_;
   std::vector<SavedPatch> savedPatches_;
