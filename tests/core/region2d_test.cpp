@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <random>
 
 #include "geometry/region2d.hpp"
 #include "support/error.hpp"
@@ -297,6 +298,65 @@ TEST(Region2d, RawComponentsAndUnionAtOnce) {
   ASSERT_EQ(raw.size(), 2u);
   ASSERT_EQ(clean.size(), 2u);
   for (size_t i = 0; i < 2; ++i) EXPECT_NEAR(raw[i].area(), clean[i].area(), kTiny);
+}
+
+// A segment away from every edge is decided without a Boolean: it must answer as one would
+// (inside all along, or a piece outside longer than the slack).
+TEST(Region2d, SegmentsInsideAgreeWithSamples) {
+  // A square with a hole and a notch cut into its top.
+  const Region2d r = Region2d::fromLoops({rect(0, 0, 10, 10), rect(3, 3, 7, 7)})
+                         .subtract(Region2d::fromLoops({{{4, 10.5}, {5, 8}, {6, 10.5}}}));
+  EXPECT_TRUE(r.containsSegment({1, 1}, {1, 0}, 1e-3));           // ends on the boundary
+  EXPECT_FALSE(r.containsSegment({4, 4}, {6, 6}, 1e-3));          // in the hole
+  EXPECT_FALSE(r.containsSegment({3.5, 9.5}, {6.5, 9.5}, 1e-3));  // across the notch
+  EXPECT_TRUE(r.containsSegment({11, 1}, {11, 1.0005}, 1e-3));    // outside, shorter than the slack
+  EXPECT_FALSE(r.containsSegment({11, 1}, {11, 2}, 1e-3));
+  std::mt19937 random(41);
+  std::uniform_real_distribution<double> at(-1, 11);
+  int inside = 0, outside = 0;
+  for (int i = 0; i < 400; ++i) {
+    const Vec2 a{at(random), at(random)}, b{at(random), at(random)};
+    // Points every 5 µm along it. A segment with one or two of them outside is left out:
+    // what it has outside may be shorter than the slack.
+    const int n = static_cast<int>(std::hypot(b.x - a.x, b.y - a.y) / 0.005) + 1;
+    int in = 0;
+    for (int k = 0; k <= n; ++k) in += r.contains({a.x + (b.x - a.x) * k / n, a.y + (b.y - a.y) * k / n});
+    if (in == n + 1) {
+      ++inside;
+      EXPECT_TRUE(r.containsSegment(a, b, 1e-3)) << a.x << "," << a.y << " " << b.x << "," << b.y;
+    } else if (n + 1 - in > 2) {
+      ++outside;
+      EXPECT_FALSE(r.containsSegment(a, b, 1e-3)) << a.x << "," << a.y << " " << b.x << "," << b.y;
+    }
+  }
+  EXPECT_GT(inside, 20);
+  EXPECT_GT(outside, 200);
+}
+
+// BoxRoom answers as boxCentres does, to the unit, whether it works the answer out, rules it
+// out by the room with nothing to avoid, or remembers it.
+TEST(Region2d, BoxRoomAnswersAsBoxCentres) {
+  const Region2d r = Region2d::fromLoops({rect(0, 0, 30, 20), rect(8, 6, 14, 12)})
+                         .subtract(Region2d::fromLoops({{{18, 21}, {20, 10}, {22, 21}}}));
+  const BoxRoom room(r);
+  std::mt19937 random(17);
+  std::uniform_real_distribution<double> at(-2, 32), size(0.2, 4);
+  int empty = 0, some = 0;
+  for (int i = 0; i < 300; ++i) {
+    const Vec2 half{size(random), size(random)}, c{at(random), at(random)};
+    const Box2 window{{c.x - 3 * half.x, c.y - 3 * half.y}, {c.x + 3 * half.x, c.y + 3 * half.y}, false};
+    std::vector<Box2> avoid;
+    for (int k = i % 4; k > 0; --k) {
+      const Vec2 o{at(random), at(random)};
+      avoid.push_back({{o.x - 2, o.y - 2}, {o.x + 2, o.y + 2}, false});
+    }
+    const Region2d expected = r.boxCentres(half, window, avoid);
+    for (int ask = 0; ask < 2; ++ask)
+      EXPECT_EQ(room.boxCentres(half, window, avoid).paths(), expected.paths());
+    expected.empty() ? ++empty : ++some;
+  }
+  EXPECT_GT(empty, 50);
+  EXPECT_GT(some, 50);
 }
 
 }  // namespace

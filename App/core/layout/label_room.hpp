@@ -18,8 +18,9 @@ constexpr double kGap = 0.6;  // mm between labels, and between a label and its 
 // more, and a leader must pass where a label's box cannot.
 constexpr double kLeaderMargin = 0.3;
 
-// The paper a leader may cross: the patch less kLeaderMargin along every cut.
-Region2d leaderPaper(const Region2d& paper);
+// The paper a leader may cross: the patch less kLeaderMargin along every cut. Made when
+// first asked, and kept in `paper` with the rooms asked of it.
+const BoxRoom& leaderPaper(const LabelPaper& paper);
 
 // Half the width and height of a label's box, turned a quarter when `vertical`.
 Vec2 halfSize(const std::string& text, double height, bool vertical);
@@ -27,7 +28,7 @@ Vec2 halfSize(const std::string& text, double height, bool vertical);
 // The centres a box of half size `half` may have: the whole box inside `inner` (the paper
 // eroded by the edge margin), `kGap` clear of the `taken` labels' boxes, not over any box
 // of `keepOff` (a segment will do), and the centre inside `window`.
-Region2d freeFor(const Region2d& inner, const std::vector<Label>& taken, Vec2 half, const Box2& window,
+Region2d freeFor(const BoxRoom& inner, const std::vector<Label>& taken, Vec2 half, const Box2& window,
                  const std::vector<Box2>& keepOff = {});
 
 // The point of `region` nearest to `p` (p itself when inside).
@@ -41,7 +42,7 @@ std::vector<Box2> leaderBoxes(const std::vector<Label>& labels);
 // a narrow tip, a line along the outline): in room within reach of the slot's root, joined
 // to it by an engraved straight leader over `leaderRoom` (leaderPaper), crossing no label
 // or leader in `taken`. Tried at `heights`, largest first; none when nothing is reached.
-std::optional<Label> leaderLabel(const Region2d& inner, const Region2d& leaderRoom, const LabelSpot& s,
+std::optional<Label> leaderLabel(const BoxRoom& inner, const BoxRoom& leaderRoom, const LabelSpot& s,
                                  const std::vector<Label>& taken, const std::vector<double>& heights);
 
 }  // namespace sliceform

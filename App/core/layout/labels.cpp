@@ -97,6 +97,23 @@ Vec2 deepestPoint(const Region2d& region) {
   return best.loops().front().front();
 }
 
+// Where the centre of a patch id `height` high may lie in `inner`; empty where none fits.
+// No box fits where a disc as wide as the box's short side does not: a cheap test first.
+// Its round corners may be coarse: a rounded erosion's corners lie on the true arcs and
+// cut inside them, so it only keeps more than the exact erosion, never less, and calls no
+// region empty that a disc, let alone a box, fits (freeFor decides the rest).
+Box2 nameWindow(const Region2d& inner, double height) {
+  const Region2d disc = erode(inner, height / 2, kCoarseTolerance);
+  if (disc.empty()) return {};
+  // Every centre that holds the box holds the disc too: the room lies within the disc's
+  // erosion, so only the boundary near that needs sweeping (a hundredth of a millimetre
+  // more for the rounding of the box to Clipper's units).
+  Box2 within = disc.bounds();
+  within.min = {within.min.x - 0.01, within.min.y - 0.01};
+  within.max = {within.max.x + 0.01, within.max.y + 0.01};
+  return within;
+}
+
 }  // namespace
 
 Vec2 nearestPoint(const Region2d& region, Vec2 p) {
@@ -120,9 +137,9 @@ Vec2 halfSize(const std::string& text, double height, bool vertical) {
   return vertical ? Vec2{h, w} : Vec2{w, h};
 }
 
-Region2d freeFor(const Region2d& inner, const std::vector<Label>& taken, Vec2 half, const Box2& window,
+Region2d freeFor(const BoxRoom& inner, const std::vector<Label>& taken, Vec2 half, const Box2& window,
                  const std::vector<Box2>& keepOff) {
-  if (inner.empty()) return {};
+  if (inner.region().empty()) return {};
   // Labels already set keep their distance: no centre in their boxes grown by this one
   // and the gap. Nor in the boxes of `keepOff` grown by this one, with no gap.
   std::vector<Box2> avoid;
@@ -163,11 +180,12 @@ Label setLabel(const std::string& text, Vec2 at, double height, bool vertical) {
 LabelPaper labelPaper(const Region2d& paper) {
   // A rounded erosion's arcs are chords with their ends on the true arcs, up to the arc
   // tolerance nearer the cut: eroding that much more keeps the whole margin.
-  return {erode(simplified(paper), kEdgeMargin + kLabelTolerance), paper};
+  return {BoxRoom(erode(simplified(paper), kEdgeMargin + kLabelTolerance)), paper};
 }
 
-Region2d leaderPaper(const Region2d& paper) {
-  return erode(simplified(paper), kLeaderMargin + kLabelTolerance);
+const BoxRoom& leaderPaper(const LabelPaper& paper) {
+  if (!paper.leaders) paper.leaders.emplace(erode(simplified(paper.paper), kLeaderMargin + kLabelTolerance));
+  return *paper.leaders;
 }
 
 Label placeName(const Region2d& paper, const std::string& id) {
@@ -184,7 +202,7 @@ Label placeStep(const LabelPaper& paper, const std::string& text, const Label& n
   std::vector<Label> all = taken;
   all.push_back(name);
   const std::vector<Box2> leaders = leaderBoxes(taken);
-  const Box2 patch = paper.inner.bounds();
+  const Box2 patch = paper.inner.region().bounds();
   const double top = std::max(kMinLabelHeight, name.height > 0 ? std::min(name.height / 2, 3.5) : 3.5);
   for (double height = top;; height = std::max(kMinLabelHeight, height * 0.8)) {
     for (const bool vertical : {false, true}) {
@@ -210,21 +228,15 @@ const std::vector<double>& nameHeights() {
 Label placeName(const LabelPaper& paper, const std::string& id, const std::vector<Label>& taken,
                 double maxHeight) {
   // Every box size searches the same inner paper, eroded once.
-  const Region2d& inner = paper.inner;
+  const BoxRoom& inner = paper.inner;
   for (const double height : nameHeights()) {
     if (height > maxHeight) continue;
-    // No box fits where a disc as wide as the box's short side does not: a cheap test first.
-    // Its round corners may be coarse: a rounded erosion's corners lie on the true arcs and
-    // cut inside them, so it only keeps more than the exact erosion, never less, and calls
-    // no region empty that a disc, let alone a box, fits (freeFor decides the rest).
-    const Region2d disc = erode(inner, height / 2, kCoarseTolerance);
-    if (disc.empty()) continue;
-    // Every centre that holds the box holds the disc too: the room lies within the disc's
-    // erosion, so only the boundary near that needs sweeping (a hundredth of a millimetre
-    // more for the rounding of the box to Clipper's units).
-    Box2 within = disc.bounds();
-    within.min = {within.min.x - 0.01, within.min.y - 0.01};
-    within.max = {within.max.x + 0.01, within.max.y + 0.01};
+    const auto known = paper.nameWindows.find(height);
+    const Box2& within =
+        known != paper.nameWindows.end()
+            ? known->second
+            : paper.nameWindows.emplace(height, nameWindow(inner.region(), height)).first->second;
+    if (within.empty) continue;
     for (const bool vertical : {false, true}) {
       const Region2d room = freeFor(inner, taken, halfSize(id, height, vertical), within);
       if (!room.empty()) return setLabel(id, deepestPoint(room), height, vertical);

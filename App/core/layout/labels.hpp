@@ -5,6 +5,8 @@
 // same marks; a label is placed only where its whole box, plus a margin, is paper.
 #pragma once
 
+#include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -37,9 +39,14 @@ struct LabelSpot {
 
 // Where a label's box may lie on a patch: its paper less a margin along every cut. Both
 // placers start from it; a patch given to both computes it once.
+// It keeps what the placers ask of it again and again: the rooms (BoxRoom), by cap height
+// where a patch id's centre may lie at all (placeName), and the paper for leaders
+// (leaderPaper). One patch's, one thread's.
 struct LabelPaper {
-  Region2d inner;
+  BoxRoom inner;
   Region2d paper;  // the patch itself, for leaders
+  mutable std::map<double, Box2> nameWindows;
+  mutable std::optional<BoxRoom> leaders;
 };
 LabelPaper labelPaper(const Region2d& paper);
 

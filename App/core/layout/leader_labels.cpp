@@ -261,10 +261,10 @@ std::vector<Stroke> leaderStrokes(const Stroke& leader) {
   return {leader, {left, a, right}};
 }
 
-std::optional<Label> leaderLabel(const Region2d& inner, const Region2d& leaderRoom, const LabelSpot& s,
+std::optional<Label> leaderLabel(const BoxRoom& inner, const BoxRoom& leaderRoom, const LabelSpot& s,
                                  const std::vector<Label>& taken, const std::vector<double>& heights) {
   const std::vector<Box2> keepOff = leaderBoxes(taken);
-  const std::vector<Vec2> ts = targets(leaderRoom, s);
+  const std::vector<Vec2> ts = targets(leaderRoom.region(), s);
   if (ts.empty()) return std::nullopt;
   const auto windowAbout = [](Vec2 lo, Vec2 hi) {
     return Box2{{lo.x - kReach, lo.y - kReach}, {hi.x + kReach, hi.y + kReach}, false};
@@ -307,7 +307,7 @@ std::optional<Label> leaderLabel(const Region2d& inner, const Region2d& leaderRo
           const Vec2 half = halfSize(s.text, height, vertical);
           const Region2d& room = roomAt(i, j, vertical);
           if (room.empty()) continue;
-          if (!field) field.emplace(leaderRoom, taken, t, gap), paths = shortestPaths(*field, t);
+          if (!field) field.emplace(leaderRoom.region(), taken, t, gap), paths = shortestPaths(*field, t);
           Vec2 centre;
           Stroke leader = shortestLeader(*field, paths, centres(room, t), half, centre);
           if (leader.empty()) continue;

@@ -85,7 +85,7 @@ Interval nearerOwn(const std::vector<LabelSpot>& spots, const LabelSpot& s, Inte
 // slot's middle and reads as this slot's; none when there is none. Beside the slot the box
 // reaches the hinge's stretch, or comes within two cap heights of its ends (a short hinge
 // has little paper beside it); on the line it may lie two label lengths beyond them.
-std::optional<Label> placeAt(const Region2d& inner, const std::vector<Label>& taken,
+std::optional<Label> placeAt(const BoxRoom& inner, const std::vector<Label>& taken,
                              const std::vector<LabelSpot>& spots, const LabelSpot& s, Way way,
                              double height) {
   const bool vertical = way != Way::Across;
@@ -125,7 +125,7 @@ std::optional<Label> placeAt(const Region2d& inner, const std::vector<Label>& ta
 
 // The label of `s` clear of `taken`: the first way it fits, at the largest size that fits
 // that way; none when it has no room.
-std::optional<Label> partnerLabel(const Region2d& inner, const std::vector<LabelSpot>& spots,
+std::optional<Label> partnerLabel(const BoxRoom& inner, const std::vector<LabelSpot>& spots,
                                   const LabelSpot& s, const std::vector<Label>& taken, double maxHeight) {
   // Where the next line is nearer than the text is long at the smallest size, a label
   // across lies over a neighbour's line, where that neighbour's label would stand turned:
@@ -153,7 +153,7 @@ std::optional<Label> partnerLabel(const Region2d& inner, const std::vector<Label
 }
 
 // The labels of `spots` set in `order`, each clear of those before it and of `taken`.
-std::vector<std::optional<Label>> partnerLabels(const Region2d& inner, const std::vector<LabelSpot>& spots,
+std::vector<std::optional<Label>> partnerLabels(const BoxRoom& inner, const std::vector<LabelSpot>& spots,
                                                 const std::vector<size_t>& order,
                                                 const std::vector<Label>& taken, double maxHeight) {
   std::vector<std::optional<Label>> labels(spots.size());
@@ -255,7 +255,7 @@ PatchLabels labelPartners(const LabelPaper& paper, const std::string& id, const 
   if (out.missing == 0) return out;
   // What is left gets a label that stands off with a leader to its slot, set last so that
   // every label that reads as its slot's on its own keeps its room.
-  const Region2d leaderRoom = leaderPaper(paper.paper);
+  const BoxRoom& leaderRoom = leaderPaper(paper);
   std::vector<Label> taken = out.partners;
   taken.push_back(out.name);
   std::vector<double> sizes{std::min(height, kMaxPartnerHeight)};
