@@ -333,8 +333,8 @@ TEST(Region2d, SegmentsInsideAgreeWithSamples) {
   EXPECT_GT(outside, 200);
 }
 
-// BoxRoom answers as boxCentres does, to the unit, whether it works the answer out, rules it
-// out by the room with nothing to avoid, or remembers it.
+// BoxRoom answers as boxCentres does, to the unit, whether it works the answer out or
+// remembers it.
 TEST(Region2d, BoxRoomAnswersAsBoxCentres) {
   const Region2d r = Region2d::fromLoops({rect(0, 0, 30, 20), rect(8, 6, 14, 12)})
                          .subtract(Region2d::fromLoops({{{18, 21}, {20, 10}, {22, 21}}}));

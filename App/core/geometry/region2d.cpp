@@ -427,20 +427,9 @@ Region2d Region2d::boxCentres(const std::vector<cInt>& query) const {
 }
 
 const Region2d& BoxRoom::boxCentres(Vec2 half, const Box2& window, const std::vector<Box2>& avoid) const {
-  return answer(Region2d::boxQuery(half, window, avoid));
-}
-
-const Region2d& BoxRoom::answer(std::vector<cInt> query) const {
+  std::vector<cInt> query = Region2d::boxQuery(half, window, avoid);
   const auto known = answers_.find(query);
   if (known != answers_.end()) return known->second;
-  // Where the box has no room with nothing to avoid, it has none clear of the boxes either
-  // (the pieces the boxes cut from the window are parts of the pieces without them, each
-  // wholly inside or outside the region). Asked first, and kept, that answers half the new
-  // questions with boxes to avoid (MODERN_Cooker_1: 24k of 48k). The query's first six
-  // numbers are the box and the window.
-  constexpr size_t kBare = 6;
-  if (query.size() > kBare && answer({query.begin(), query.begin() + kBare}).empty())
-    return answers_.emplace(std::move(query), Region2d{}).first->second;
   Region2d room = region_.boxCentres(query);
   return answers_.emplace(std::move(query), std::move(room)).first->second;
 }

@@ -131,8 +131,6 @@ class BoxRoom {
   const Region2d& boxCentres(Vec2 half, const Box2& window, const std::vector<Box2>& avoid) const;
 
  private:
-  const Region2d& answer(std::vector<ClipperLib::cInt> query) const;
-
   Region2d region_;
   mutable std::map<std::vector<ClipperLib::cInt>, Region2d> answers_;
 };
