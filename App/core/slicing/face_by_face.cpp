@@ -5,9 +5,11 @@
 #include <BRepAdaptor_Surface.hxx>
 #include <BRepAlgoAPI_Section.hxx>
 #include <BRepBndLib.hxx>
+#include <BRepBuilderAPI_Copy.hxx>
 #include <BRepBuilderAPI_MakeEdge.hxx>
 #include <BRepBuilderAPI_MakeFace.hxx>
 #include <BRepClass_FaceClassifier.hxx>
+#include <BRepLib.hxx>
 #include <BRepTools.hxx>
 #include <BRep_Builder.hxx>
 #include <BRep_Tool.hxx>
@@ -520,7 +522,15 @@ FaceByFace::FaceByFace(const TopoDS_Shape& solid, const gp_Dir& normal) : normal
     BRepBndLib::Add(f.face, f.box);
     std::tie(f.lo, f.hi) = along(f.box, normal);
     BRepTools::UVBounds(f.face, f.uv[0], f.uv[1], f.uv[2], f.uv[3]);
-    f.solved = solvedBy(BRepAdaptor_Surface(f.face, Standard_False), normal);
+    const BRepAdaptor_Surface surface(f.face, Standard_False);
+    f.solved = solvedBy(surface, normal);
+    f.classified = f.face;
+    if (f.solved && surface.GetType() == GeomAbs_Plane) {
+      f.classified = TopoDS::Face(BRepBuilderAPI_Copy(f.face).Shape());
+      TopTools_ListOfShape edges;
+      for (TopExp_Explorer e(f.classified, TopAbs_EDGE); e.More(); e.Next()) edges.Append(e.Current());
+      BRepLib::BuildPCurveForEdgesOnPlane(edges, f.classified);
+    }
     for (TopExp_Explorer e(f.face, TopAbs_EDGE); e.More(); e.Next()) {
       const int index = edges.FindIndex(e.Current()) - 1;
       if (std::find(f.edges.begin(), f.edges.end(), index) == f.edges.end()) f.edges.push_back(index);
@@ -640,7 +650,7 @@ Handle(TopTools_HSequenceOfShape) FaceByFace::planeEdges(const gp_Pln& plane, do
         for (End& cut : cuts) cut.t = ElCLib::InPeriod(cut.t, c.first, c.last);
       std::sort(cuts.begin(), cuts.end(), [](const End& a, const End& b) { return a.t < b.t; });
       if (c.periodic && cuts.empty()) {
-        if (classify(f.face, s, f.uv, c.curve->Value(c.first + period / 2)) == TopAbs_IN)
+        if (classify(f.classified, s, f.uv, c.curve->Value(c.first + period / 2)) == TopAbs_IN)
           out->Append(BRepBuilderAPI_MakeEdge(c.curve, c.first, c.last).Edge());
         continue;
       }
@@ -657,7 +667,7 @@ Handle(TopTools_HSequenceOfShape) FaceByFace::planeEdges(const gp_Pln& plane, do
         const End& b = bounds[(i + 1) % bounds.size()];
         const double tb = i + 1 == bounds.size() ? b.t + period : b.t;
         if (tb - a.t <= 1e-9 * (std::abs(period) + 1)) return nullptr;  // two crossings at one point
-        const TopAbs_State state = classify(f.face, s, f.uv, c.curve->Value((a.t + tb) / 2));
+        const TopAbs_State state = classify(f.classified, s, f.uv, c.curve->Value((a.t + tb) / 2));
         if (state == TopAbs_ON) return nullptr;
         if (state != TopAbs_IN) continue;
         if (tb > c.last && c.curve->IsKind(STANDARD_TYPE(Geom_BSplineCurve))) {
