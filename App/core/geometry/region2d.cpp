@@ -62,8 +62,8 @@ bool inside(const Paths& paths, IntPoint q) {
   return depth > 0;
 }
 
-// The sign of (b - a) x (c - a), exactly: coordinates below 2^62 make products Clipper's
-// own 64-bit arithmetic could overflow.
+// The sign of (b - a) x (c - a), exactly: the products of Clipper's coordinates can
+// overflow 64 bits, so they are taken in 128.
 int turn(IntPoint a, IntPoint b, IntPoint c) {
   const __int128 d =
       static_cast<__int128>(b.X - a.X) * (c.Y - a.Y) - static_cast<__int128>(b.Y - a.Y) * (c.X - a.X);
