@@ -180,7 +180,7 @@ Label setLabel(const std::string& text, Vec2 at, double height, bool vertical) {
 LabelPaper labelPaper(const Region2d& paper) {
   // A rounded erosion's arcs are chords with their ends on the true arcs, up to the arc
   // tolerance nearer the cut: eroding that much more keeps the whole margin.
-  return {BoxRoom(erode(simplified(paper), kEdgeMargin + kLabelTolerance)), paper};
+  return {BoxRoom(erode(simplified(paper), kEdgeMargin + kLabelTolerance)), paper, {}, std::nullopt};
 }
 
 const BoxRoom& leaderPaper(const LabelPaper& paper) {
