@@ -79,7 +79,7 @@ class FaceByFace {
     TopoDS_Face face;
     // What the classifier reads: of a plane, a copy with its edges' 2D curves stored (made
     // once); else the face itself. A plane keeps none, and OCCT projects every edge onto it
-    // again for each point classified (Bottom.brep: 43 % of the classifier's time).
+    // again for each point classified (Bottom.brep: a third of the classifier's time).
     TopoDS_Face classified;
     Bnd_Box box;
     double lo, hi;
