@@ -1,8 +1,6 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 #include "assembly/fold.hpp"
 
-#include <BRepBuilderAPI_Copy.hxx>
-#include <BRepLib.hxx>
 #include <BRepTools.hxx>
 #include <BRep_Builder.hxx>
 #include <IFSelect_ReturnStatus.hxx>
@@ -12,9 +10,6 @@
 #include <Message_Printer.hxx>
 #include <STEPControl_Controller.hxx>
 #include <STEPControl_Writer.hxx>
-#include <TopExp_Explorer.hxx>
-#include <TopTools_ListOfShape.hxx>
-#include <TopoDS.hxx>
 #include <TopoDS_Compound.hxx>
 #include <gp_Ax1.hxx>
 
@@ -27,6 +22,7 @@
 #include "support/error.hpp"
 #include "support/occt_guard.hpp"
 #include "support/occt_statics.hpp"
+#include "support/plane_curves.hpp"
 
 namespace sliceform {
 namespace {
@@ -98,16 +94,10 @@ void writeShape(const TopoDS_Shape& shape, const std::string& path) {
           for (int i = 1; i <= printers.Length(); ++i) printers(i)->SetTraceLevel(levels[i - 1]);
         }
       } restore{printers, levels};
-      // Planar faces keep no 2D curves, and the writer projects every edge onto its plane
-      // again and again while it bounds the faces (23 s for rocker-arm's 26,000 edges). Stored
-      // once on a copy, they are looked up instead. A mesh's polygon loops go as one edge
-      // each: the writer's time and the file grow with the edges.
-      const TopoDS_Shape withCurves = BRepBuilderAPI_Copy(polylineLoopsAsSplines(shape)).Shape();
-      for (TopExp_Explorer f(withCurves, TopAbs_FACE); f.More(); f.Next()) {
-        TopTools_ListOfShape edges;
-        for (TopExp_Explorer e(f.Current(), TopAbs_EDGE); e.More(); e.Next()) edges.Append(e.Current());
-        BRepLib::BuildPCurveForEdgesOnPlane(edges, TopoDS::Face(f.Current()));
-      }
+      // The planes' 2D curves stored once, not projected again and again while the writer
+      // bounds the faces (withPlaneCurves). A mesh's polygon loops go as one edge each: the
+      // writer's time and the file grow with the edges.
+      const TopoDS_Shape withCurves = withPlaneCurves(polylineLoopsAsSplines(shape));
       // The writer's settings: AP214, millimetres, and no 2D curves on the planes (readers
       // rebuild them, and they doubled the file and the time: a mesh's polygon patches have
       // tens of thousands of edges). The schema is ours too, not the host's: OCCT 7.8.1

@@ -5,11 +5,9 @@
 #include <BRepAdaptor_Surface.hxx>
 #include <BRepAlgoAPI_Section.hxx>
 #include <BRepBndLib.hxx>
-#include <BRepBuilderAPI_Copy.hxx>
 #include <BRepBuilderAPI_MakeEdge.hxx>
 #include <BRepBuilderAPI_MakeFace.hxx>
 #include <BRepClass_FaceClassifier.hxx>
-#include <BRepLib.hxx>
 #include <BRepTools.hxx>
 #include <BRep_Builder.hxx>
 #include <BRep_Tool.hxx>
@@ -41,6 +39,7 @@
 #include "slicing/torus_section.hpp"
 #include "slicing/traced_section.hpp"
 #include "support/parallel.hpp"
+#include "support/plane_curves.hpp"
 
 namespace sliceform {
 namespace {
@@ -525,12 +524,7 @@ FaceByFace::FaceByFace(const TopoDS_Shape& solid, const gp_Dir& normal) : normal
     const BRepAdaptor_Surface surface(f.face, Standard_False);
     f.solved = solvedBy(surface, normal);
     f.classified = f.face;
-    if (f.solved && surface.GetType() == GeomAbs_Plane) {
-      f.classified = TopoDS::Face(BRepBuilderAPI_Copy(f.face).Shape());
-      TopTools_ListOfShape edges;
-      for (TopExp_Explorer e(f.classified, TopAbs_EDGE); e.More(); e.Next()) edges.Append(e.Current());
-      BRepLib::BuildPCurveForEdgesOnPlane(edges, f.classified);
-    }
+    if (f.solved && surface.GetType() == GeomAbs_Plane) f.classified = TopoDS::Face(withPlaneCurves(f.face));
     for (TopExp_Explorer e(f.face, TopAbs_EDGE); e.More(); e.Next()) {
       const int index = edges.FindIndex(e.Current()) - 1;
       if (std::find(f.edges.begin(), f.edges.end(), index) == f.edges.end()) f.edges.push_back(index);

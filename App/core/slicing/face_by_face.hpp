@@ -77,9 +77,8 @@ class FaceByFace {
   };
   struct Face {
     TopoDS_Face face;
-    // What the classifier reads: of a plane, a copy with its edges' 2D curves stored (made
-    // once); else the face itself. A plane keeps none, and OCCT projects every edge onto it
-    // again for each point classified (Bottom.brep: a third of the classifier's time).
+    // What the classifier reads: of a plane, a copy with its edges' 2D curves stored, made
+    // once (withPlaneCurves); else the face itself.
     TopoDS_Face classified;
     Bnd_Box box;
     double lo, hi;
