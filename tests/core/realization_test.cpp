@@ -9,6 +9,7 @@
 #include "frames/hinge_table.hpp"
 #include "model/model.hpp"
 #include "realization/interlock.hpp"
+#include "realization/patch_states.hpp"
 #include "realization/realize.hpp"
 #include "support/bounded_cache.hpp"
 #include "test_support.hpp"
@@ -377,6 +378,37 @@ TEST(SearchCache, KeepsWhatWasAskedForLatelyWithinTwiceItsBudget) {
   small.age();
   ASSERT_NE(small.find(7), nullptr);  // within the budget nothing is dropped
   EXPECT_EQ(*small.find(7), 7);
+}
+
+// The split repair's searches share a RealizeMemo: the patch states one search cut, and
+// the neck tests it made of states it never cut, the next one takes. Taken or made, a
+// search finds the same slots, pieces and slotted patches.
+TEST(RealizeMemo, ASearchFindsTheSameWithTheMemoFilled) {
+  ArrangementParams params;
+  params.slices = 48;
+  SlotParams slots;
+  params.hinges.slotWidth = slots.width();
+  const Model model = modelFromShape(makeHollowSphere(60, 45), "test solid");
+  const RealizationInput in = realizationInput(arrange(model, params), model.meshDeflection);
+  const Realization plain = realize(in, slots);
+  const std::shared_ptr<RealizeMemo> memo = makeRealizeMemo();
+  const Realization first = realize(in, slots, {}, {}, memo.get());
+  // The search tested states it never cut (the shell's thin sections split at many slots).
+  ASSERT_GT(memo->opened.size(), 100u);
+  ASSERT_GT(memo->states.size(), 100u);
+  const Realization again = realize(in, slots, {}, {}, memo.get());
+  // With the states forgotten, the search has only the memo's neck tests to bound its moves
+  // by, and cuts the states it keeps again.
+  memo->states = BoundedCache<MemoKey, PatchState>(kPatchStateCacheBytes);
+  const Realization bounded = realize(in, slots, {}, {}, memo.get());
+  for (const Realization* r : {&first, &again, &bounded}) {
+    EXPECT_EQ(r->slots, plain.slots);
+    EXPECT_EQ(r->splitPatches, plain.splitPatches);
+    EXPECT_EQ(r->interlocks.remaining, plain.interlocks.remaining);
+    ASSERT_EQ(r->slotted.size(), plain.slotted.size());
+    for (size_t k = 0; k < plain.slotted.size(); ++k)
+      EXPECT_NEAR(r->slotted[k].area(), plain.slotted[k].area(), 1e-9) << k;
+  }
 }
 
 TEST(RealizeSolids, HollowSphere) {

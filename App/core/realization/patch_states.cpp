@@ -131,18 +131,23 @@ void PatchStates::prepareBounds(const std::vector<SlotMove>& moves, const std::v
       moves, slots, own, [&](const Key& k) { return cache_.contains(k) || opened_.contains(k); }, keys,
       slotsOf);
   std::vector<size_t> missing;
+  std::vector<MemoKey> memoKeys(keys.size());
+  std::vector<std::shared_ptr<const SlotCutter::Opened>> opened(keys.size());
   for (size_t i = 0; i < keys.size(); ++i) {
     const int p = keys[i].first;
-    if (memo_ && in_.patches[p].cylinder >= 0)
-      if (std::shared_ptr<const PatchState> st = memo_->states.find(memoKey(p, slotsOf[i]))) {
+    if (memo_ && in_.patches[p].cylinder >= 0) {
+      memoKeys[i] = memoKey(p, slotsOf[i]);
+      if (std::shared_ptr<const PatchState> st = memo_->states.find(memoKeys[i])) {
         cache_.put(std::move(keys[i]), st, st->bytes);
         continue;
       }
+      opened[i] = memo_->opened.find(memoKeys[i]);
+    }
     missing.push_back(i);
   }
-  std::vector<std::shared_ptr<const SlotCutter::Opened>> opened(keys.size());
   parallelFor(missing.size(), [&](size_t m) {
     const size_t i = missing[m];
+    if (opened[i]) return;
     const int p = keys[i].first;
     const std::vector<SlotCut> cuts = planSlots(*lines_[p], patchHinges(in_, slotsOf[i], p), params_);
     opened[i] = std::make_shared<SlotCutter::Opened>(cutters_[p]->opened(slotRegion(cuts, params_)));
@@ -151,6 +156,8 @@ void PatchStates::prepareBounds(const std::vector<SlotMove>& moves, const std::v
     // The key too: an entry is small, and the cache holds many (Top: 25,565 tests).
     size_t bytes = sizeof(SlotCutter::Opened) + sizeof(Key) + keys[i].second.size() * sizeof(Slot) + 64;
     for (const Region2d& sliver : opened[i]->slivers) bytes += sliver.bytes();
+    if (memo_ && in_.patches[keys[i].first].cylinder >= 0)
+      memo_->opened.put(std::move(memoKeys[i]), opened[i], bytes + std::get<3>(memoKeys[i]).size() * 40);
     opened_.put(std::move(keys[i]), opened[i], bytes);
   }
 }
@@ -172,7 +179,10 @@ std::shared_ptr<const PatchState> PatchStates::of(int p, const std::vector<SlotP
 void PatchStates::age() {
   cache_.age();
   opened_.age();
-  if (memo_) memo_->states.age();
+  if (memo_) {
+    memo_->states.age();
+    memo_->opened.age();
+  }
 }
 
 }  // namespace sliceform

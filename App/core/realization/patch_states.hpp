@@ -42,6 +42,10 @@ class RealizeMemo {
   // Bounded as the search's own cache, and aged at the same steps: the repairs' 24 searches
   // put every state they cut here (occ/Top.brep: 384 MB at the peak, 165 MB before).
   BoundedCache<MemoKey, PatchState> states{kPatchStateCacheBytes};
+  // The neck tests of states never cut (PatchStates::prepareBounds), likewise: a repair's
+  // search asks again for those of every patch it did not move (occ/Top.brep's file axes:
+  // 24 searches, all with the same 11 patches in pieces).
+  BoundedCache<MemoKey, SlotCutter::Opened> opened{kPatchStateCacheBytes};
 };
 
 // A move of the search: hinges given new slot pairs.

@@ -31,6 +31,7 @@ class BoundedCache {
   }
 
   bool contains(const Key& key) const { return current_.count(key) > 0 || older_.count(key) > 0; }
+  size_t size() const { return current_.size() + older_.size(); }
 
   void put(Key key, std::shared_ptr<const T> value, size_t cost) {
     if (contains(key)) return;
