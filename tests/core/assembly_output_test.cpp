@@ -7,7 +7,18 @@
 #include <cairo.h>
 #include <jpeglib.h>
 #include <BRepBndLib.hxx>
+#include <BRepBuilderAPI_MakeEdge.hxx>
+#include <BRepBuilderAPI_MakeFace.hxx>
+#include <BRepBuilderAPI_MakeWire.hxx>
+#include <BRep_Tool.hxx>
 #include <Bnd_Box.hxx>
+#include <Geom2d_BSplineCurve.hxx>
+#include <Geom_BSplineCurve.hxx>
+#include <TColStd_Array1OfInteger.hxx>
+#include <TColStd_Array1OfReal.hxx>
+#include <TColgp_Array1OfPnt.hxx>
+#include <TopExp_Explorer.hxx>
+#include <TopoDS.hxx>
 #include <nlohmann/json.hpp>
 
 #include <cstdint>
@@ -27,6 +38,7 @@
 #include "output/jpeg.hpp"
 #include "realization/realize.hpp"
 #include "support/error.hpp"
+#include "support/plane_curves.hpp"
 #include "test_support.hpp"
 
 namespace sliceform {
@@ -166,6 +178,51 @@ TEST(AssemblyOutput, GlbIsInMetresWithYUpAndTheAssemblysBounds) {
   EXPECT_NEAR(triangles, outlines, 1e-4 * outlines);
   // Nothing is left beside the file: no temporary .glb, no side .bin.
   EXPECT_EQ(std::distance(std::filesystem::directory_iterator(dir.file("")), {}), 1);
+}
+
+// The STEP writer bounds a face's 2D curves once for every edge of it (withPlaneCurves):
+// a B-spline curve longer than its edge is cut to the edge's range there, where bounding it
+// would copy and cut it every time. The curve is the same along the edge, and the shape
+// given is left as it was.
+TEST(AssemblyOutput, PlaneCurvesAreTrimmedToTheirEdges) {
+  // An arch: a cubic B-spline from (0,0) to (30,0) through (10,20) and (20,20), its middle
+  // (parameters 0.2 to 0.8) closed by a straight edge.
+  TColgp_Array1OfPnt poles(1, 4);
+  poles(1) = {0, 0, 0}, poles(2) = {10, 20, 0}, poles(3) = {20, 20, 0}, poles(4) = {30, 0, 0};
+  TColStd_Array1OfReal knots(1, 2);
+  knots(1) = 0, knots(2) = 1;
+  TColStd_Array1OfInteger mults(1, 2);
+  mults(1) = mults(2) = 4;
+  const Handle(Geom_BSplineCurve) arch = new Geom_BSplineCurve(poles, knots, mults, 3);
+  const TopoDS_Edge curved = BRepBuilderAPI_MakeEdge(arch, 0.2, 0.8);
+  const TopoDS_Edge straight = BRepBuilderAPI_MakeEdge(arch->Value(0.8), arch->Value(0.2));
+  const TopoDS_Face face = BRepBuilderAPI_MakeFace(BRepBuilderAPI_MakeWire(curved, straight).Wire(), true);
+  ASSERT_FALSE(face.IsNull());
+  const auto bspline = [](const TopoDS_Shape& shape, double& first, double& last) {
+    const TopoDS_Face f = TopoDS::Face(TopExp_Explorer(shape, TopAbs_FACE).Current());
+    for (TopExp_Explorer e(f, TopAbs_EDGE); e.More(); e.Next())
+      if (auto c = Handle(Geom2d_BSplineCurve)::DownCast(
+              BRep_Tool::CurveOnSurface(TopoDS::Edge(e.Current()), f, first, last)))
+        return c;
+    return Handle(Geom2d_BSplineCurve)();
+  };
+  double first = 0, last = 0, whole0 = 0, whole1 = 0;
+  const Handle(Geom2d_BSplineCurve) trimmed = bspline(withPlaneCurves(face, true), first, last);
+  const Handle(Geom2d_BSplineCurve) whole = bspline(withPlaneCurves(face), whole0, whole1);
+  ASSERT_FALSE(trimmed.IsNull());
+  ASSERT_FALSE(whole.IsNull());
+  EXPECT_NEAR(whole->FirstParameter(), 0, 1e-12);  // as the projection makes it
+  EXPECT_NEAR(whole->LastParameter(), 1, 1e-12);
+  EXPECT_NEAR(first, 0.2, 1e-12);
+  EXPECT_NEAR(last, 0.8, 1e-12);
+  EXPECT_NEAR(trimmed->FirstParameter(), 0.2, 1e-12);
+  EXPECT_NEAR(trimmed->LastParameter(), 0.8, 1e-12);
+  for (double t = 0.2; t <= 0.8 + 1e-9; t += 0.05)
+    EXPECT_LT(trimmed->Value(t).Distance(whole->Value(t)), 1e-9) << t;
+  // The face given keeps its own curves: none were cut.
+  double own0 = 0, own1 = 0;
+  const Handle(Geom2d_BSplineCurve) own = bspline(face, own0, own1);
+  if (!own.IsNull()) EXPECT_NEAR(own->FirstParameter(), 0, 1e-12);
 }
 
 TEST(AssemblyOutput, GltfErrorsAreIoErrors) {

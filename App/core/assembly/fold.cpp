@@ -95,9 +95,9 @@ void writeShape(const TopoDS_Shape& shape, const std::string& path) {
         }
       } restore{printers, levels};
       // The planes' 2D curves stored once, not projected again and again while the writer
-      // bounds the faces (withPlaneCurves). A mesh's polygon loops go as one edge each: the
-      // writer's time and the file grow with the edges.
-      const TopoDS_Shape withCurves = withPlaneCurves(polylineLoopsAsSplines(shape));
+      // bounds the faces, and trimmed to their edges (withPlaneCurves). A mesh's polygon
+      // loops go as one edge each: the writer's time and the file grow with the edges.
+      const TopoDS_Shape withCurves = withPlaneCurves(polylineLoopsAsSplines(shape), true);
       // The writer's settings: AP214, millimetres, and no 2D curves on the planes (readers
       // rebuild them, and they doubled the file and the time: a mesh's polygon patches have
       // tens of thousands of edges). The schema is ours too, not the host's: OCCT 7.8.1

@@ -3,18 +3,36 @@
 
 #include <BRepBuilderAPI_Copy.hxx>
 #include <BRepLib.hxx>
+#include <BRep_Builder.hxx>
+#include <BRep_Tool.hxx>
+#include <Geom2d_BSplineCurve.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopTools_ListOfShape.hxx>
 #include <TopoDS.hxx>
 
 namespace sliceform {
 
-TopoDS_Shape withPlaneCurves(const TopoDS_Shape& shape) {
+TopoDS_Shape withPlaneCurves(const TopoDS_Shape& shape, bool trimmed) {
   const TopoDS_Shape copy = BRepBuilderAPI_Copy(shape).Shape();
+  BRep_Builder builder;
   for (TopExp_Explorer f(copy, TopAbs_FACE); f.More(); f.Next()) {
+    const TopoDS_Face& face = TopoDS::Face(f.Current());
     TopTools_ListOfShape edges;
-    for (TopExp_Explorer e(f.Current(), TopAbs_EDGE); e.More(); e.Next()) edges.Append(e.Current());
-    BRepLib::BuildPCurveForEdgesOnPlane(edges, TopoDS::Face(f.Current()));
+    for (TopExp_Explorer e(face, TopAbs_EDGE); e.More(); e.Next()) edges.Append(e.Current());
+    BRepLib::BuildPCurveForEdgesOnPlane(edges, face);
+    if (!trimmed) continue;
+    for (TopTools_ListOfShape::Iterator e(edges); e.More(); e.Next()) {
+      const TopoDS_Edge& edge = TopoDS::Edge(e.Value());
+      double first = 0, last = 0;
+      const Handle(Geom2d_BSplineCurve) curve =
+          Handle(Geom2d_BSplineCurve)::DownCast(BRep_Tool::CurveOnSurface(edge, face, first, last));
+      if (curve.IsNull() || BRep_Tool::IsClosed(edge, face) ||
+          (first <= curve->FirstParameter() && last >= curve->LastParameter()))
+        continue;
+      const Handle(Geom2d_BSplineCurve) piece = Handle(Geom2d_BSplineCurve)::DownCast(curve->Copy());
+      piece->Segment(first, last);
+      builder.UpdateEdge(edge, piece, face, BRep_Tool::Tolerance(edge));
+    }
   }
   return copy;
 }
