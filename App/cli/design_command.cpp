@@ -230,7 +230,10 @@ void runDesign(DesignOptions o) {
     laidOut = true;
   } else {
     try {
-      given = designPatches(model, o.params, std::ref(bar), &deadline);
+      // Where other frames follow, a design with many patches in pieces is not repaired:
+      // those frames are tried first (occ/Top.brep: 11 in pieces, 24 repair searches).
+      given = designPatches(model, o.params, std::ref(bar), &deadline, nullptr,
+                            mayTurn ? SplitRepair::WhenFew : SplitRepair::Always);
       const std::vector<std::string> problems = designProblems(*given);
       if (!problems.empty()) refusal = problems.front();
       if (refusal.empty() || !mayTurn) layOutGiven();
@@ -281,6 +284,11 @@ void runDesign(DesignOptions o) {
       std::printf("directions no other frame tried gives a buildable design either: the file's axes kept\n");
       if (!given) throw Error(ErrorKind::Unbuildable, refusal);
       if (writer) writer->discard();  // the other frame's, begun when it was laid out
+      if (given->grazes.splitLeft) {
+        // Kept after all: repaired now, as far as the repair goes (its first stages taken).
+        Design repaired = designPatches(model, o.params, std::ref(bar), &deadline, &*given);
+        given = std::move(repaired);
+      }
       layOutGiven();
     }
   }

@@ -211,6 +211,30 @@ TEST(Buildable, DesigningAgainTakesOnlyStagesWhoseInputsAreTheSame) {
             reportJson(model, thicker, runDesign(model, thicker)).dump());
 }
 
+// A frame that other frames follow when it cannot be built (the CLI's file axes) is not
+// repaired where more patches are in pieces than the repair mends: occ/Top.brep at its file
+// axes and 48 slices leaves 4. The repair, asked for later (the file's axes kept after
+// all), takes the design's first stages and makes the design an Always repair makes.
+TEST(Buildable, ManyPatchesInPiecesAreLeftToOtherFrames) {
+  const Model model = scaledToSize(readModel(SLICEFORM_OCCT_DATA_DIR "/occ/Top.brep"), 150);
+  DesignParams params;
+  params.arrangement.slices = 48;
+  const Design left = designPatches(model, params, {}, nullptr, nullptr, SplitRepair::WhenFew);
+  EXPECT_TRUE(left.grazes.splitLeft);
+  EXPECT_GT(left.realization.splitPatches + left.realization.lostPins, 2);
+  EXPECT_EQ(left.grazes.splitMoved + left.grazes.splitDropped, 0);
+  EXPECT_FALSE(designProblems(left).empty());
+  Design repaired = designPatches(model, params, {}, nullptr, &left);
+  Design always = designPatches(model, params);
+  layOutDesign(repaired, params.sheet);
+  layOutDesign(always, params.sheet);
+  EXPECT_EQ(repaired.arrangement.stagesTaken, 3);
+  EXPECT_FALSE(repaired.grazes.splitLeft);
+  EXPECT_FALSE(always.grazes.splitLeft);
+  EXPECT_GT(always.grazes.splitMoved + always.grazes.splitDropped, 0);  // the repair tried, and kept a change
+  EXPECT_EQ(reportJson(model, params, repaired).dump(), reportJson(model, params, always).dump());
+}
+
 // A BRep solid edited the way the FreeCAD feature redesigns: the exact sections of the
 // cylinders the edit keeps are taken from the design before, not cut from the solid again,
 // and the design is the one made from nothing.

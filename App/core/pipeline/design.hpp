@@ -61,11 +61,19 @@ Design runDesign(const Model& model, const DesignParams& params, const Progress&
                  const PatchesReady& patchesReady = {}, const Deadline* deadline = nullptr,
                  const Design* earlier = nullptr);
 
+// How far designPatches repairs the patches the slot search left in pieces (repairSplits):
+// always; or only where few are, for a frame other frames follow when it cannot be built
+// (the CLI's file axes, no one's choice). The repair mends about one patch in its searches
+// (kFewBroken), each a whole slot search: with more in pieces, the time goes to the other
+// frames, and the design says so (GrazeRepair::splitLeft).
+enum class SplitRepair { Always, WhenFew };
+
 // runDesign in its two parts, for a caller that picks among designs before laying one out
 // (designInBestFrame): every stage up to the layout (`layout` left empty; designProblems
 // reads nothing of it), then the layout.
 Design designPatches(const Model& model, DesignParams params, const Progress& progress = {},
-                     const Deadline* deadline = nullptr, const Design* earlier = nullptr);
+                     const Deadline* deadline = nullptr, const Design* earlier = nullptr,
+                     SplitRepair repair = SplitRepair::Always);
 void layOutDesign(Design& design, const SheetSpec& sheet, const Progress& progress = {});
 
 // What the layout reads of it (layOut, flattenPatch): refers to the design's own members.

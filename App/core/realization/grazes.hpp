@@ -35,6 +35,7 @@ struct GrazeRepair {
   int splitDropped = 0;        // split patches taken out, the scaffold still certified
   bool timedOut = false;       // the deadline passed while moving patches off grazes
   bool splitTimedOut = false;  // the deadline passed while repairing patches left in pieces
+  bool splitLeft = false;      // too many in pieces to repair: left to other frames (designPatches)
 };
 
 // Moves patches off grazes (see above); the arrangement's scaffold, hinges, certificate
