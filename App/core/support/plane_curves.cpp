@@ -1,11 +1,14 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 #include "support/plane_curves.hpp"
 
+#include <algorithm>
+
 #include <BRepBuilderAPI_Copy.hxx>
 #include <BRepLib.hxx>
 #include <BRep_Builder.hxx>
 #include <BRep_Tool.hxx>
 #include <Geom2d_BSplineCurve.hxx>
+#include <Standard_Failure.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopTools_ListOfShape.hxx>
 #include <TopoDS.hxx>
@@ -26,12 +29,17 @@ TopoDS_Shape withPlaneCurves(const TopoDS_Shape& shape, bool trimmed) {
       double first = 0, last = 0;
       const Handle(Geom2d_BSplineCurve) curve =
           Handle(Geom2d_BSplineCurve)::DownCast(BRep_Tool::CurveOnSurface(edge, face, first, last));
-      if (curve.IsNull() || BRep_Tool::IsClosed(edge, face) ||
-          (first <= curve->FirstParameter() && last >= curve->LastParameter()))
-        continue;
-      const Handle(Geom2d_BSplineCurve) piece = Handle(Geom2d_BSplineCurve)::DownCast(curve->Copy());
-      piece->Segment(first, last);
-      builder.UpdateEdge(edge, piece, face, BRep_Tool::Tolerance(edge));
+      if (curve.IsNull() || curve->IsPeriodic() || BRep_Tool::IsClosed(edge, face)) continue;
+      const double from = std::max(first, curve->FirstParameter()),
+                   to = std::min(last, curve->LastParameter());
+      if ((from <= curve->FirstParameter() && to >= curve->LastParameter()) || !(to - from > 1e-9)) continue;
+      // Where OCCT cannot cut it, the curve stays whole: the writer only bounds it longer.
+      try {
+        const Handle(Geom2d_BSplineCurve) piece = Handle(Geom2d_BSplineCurve)::DownCast(curve->Copy());
+        piece->Segment(from, to);
+        builder.UpdateEdge(edge, piece, face, BRep_Tool::Tolerance(edge));
+      } catch (const Standard_Failure&) {
+      }
     }
   }
   return copy;
