@@ -20,6 +20,7 @@
 #include <cmath>
 #include <functional>
 #include <set>
+#include <stdexcept>
 #include <vector>
 
 #include "output/report_json.hpp"
@@ -224,6 +225,7 @@ TEST(Buildable, ManyPatchesInPiecesAreLeftToOtherFrames) {
   EXPECT_GT(left.realization.splitPatches + left.realization.lostPins, 2);
   EXPECT_EQ(left.grazes.splitMoved + left.grazes.splitDropped, 0);
   EXPECT_FALSE(designProblems(left).empty());
+  EXPECT_THROW(reportJson(model, params, left), std::invalid_argument);  // not laid out
   Design repaired = designPatches(model, params, {}, nullptr, &left);
   Design always = designPatches(model, params);
   layOutDesign(repaired, params.sheet);

@@ -2,6 +2,7 @@
 #include "output/report_json.hpp"
 
 #include <fstream>
+#include <stdexcept>
 
 #include "support/atomic_file.hpp"
 #include "support/error.hpp"
@@ -82,6 +83,10 @@ json directionsJson(const DirectionChoice& c) {
 
 json reportJson(const Model& model, const DesignParams& params, const Design& d) {
   const Arrangement& a = d.arrangement;
+  // Every patch's sheet is reported: a design from designPatches alone has none yet.
+  if (d.layout.patches.size() != a.scaffold.patches.size() ||
+      d.layout.packing.placements.size() != a.scaffold.patches.size())
+    throw std::invalid_argument("reportJson: the design is not laid out (layOutDesign)");
   const Realization& r = d.realization;
   const ArrangementParams& p = params.arrangement;
   json doc;

@@ -15,6 +15,8 @@
 
 namespace sliceform {
 
+// `design` laid out (runDesign, or layOutDesign after designPatches); std::invalid_argument
+// if it is not.
 nlohmann::json reportJson(const Model& model, const DesignParams& params, const Design& design);
 nlohmann::json timingsJson(const std::vector<StageTime>& timings);
 void writeJson(const nlohmann::json& doc, const std::string& path);
