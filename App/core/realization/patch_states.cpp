@@ -156,8 +156,12 @@ void PatchStates::prepareBounds(const std::vector<SlotMove>& moves, const std::v
     // The key too: an entry is small, and the cache holds many (Top: 25,565 tests).
     size_t bytes = sizeof(SlotCutter::Opened) + sizeof(Key) + keys[i].second.size() * sizeof(Slot) + 64;
     for (const Region2d& sliver : opened[i]->slivers) bytes += sliver.bytes();
-    if (memo_ && in_.patches[keys[i].first].cylinder >= 0)
-      memo_->opened.put(std::move(memoKeys[i]), opened[i], bytes + std::get<3>(memoKeys[i]).size() * 40);
+    if (memo_ && in_.patches[keys[i].first].cylinder >= 0) {
+      // Its key's hinges too, counted before the key is moved into the memo.
+      const size_t keyBytes =
+          std::get<3>(memoKeys[i]).size() * sizeof(std::tuple_element_t<3, MemoKey>::value_type);
+      memo_->opened.put(std::move(memoKeys[i]), opened[i], bytes + keyBytes);
+    }
     opened_.put(std::move(keys[i]), opened[i], bytes);
   }
 }
