@@ -15,6 +15,7 @@
 #include <GProp_GProps.hxx>
 #include <Geom_BSplineCurve.hxx>
 #include <Geom_Curve.hxx>
+#include <Geom_Ellipse.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopoDS.hxx>
 #include <TopoDS_Compound.hxx>
@@ -22,10 +23,13 @@
 #include <gp_Circ.hxx>
 #include <gp_Elips.hxx>
 
+#include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include "model/model.hpp"
 #include "slicing/brep_slicer.hpp"
+#include "slicing/edge_samples.hpp"
 #include "slicing/mesh_slicer.hpp"
 #include "support/error.hpp"
 #include "test_support.hpp"
@@ -471,6 +475,42 @@ TEST(BrepSlicer, SectionCurvesPutNoEdgeOffItsPlane) {
     }
     return taken;
   });
+}
+
+}  // namespace
+}  // namespace sliceform
+
+namespace sliceform {
+namespace {
+
+// An ellipse's arc of nearly a whole turn is sampled along the arc: OCCT 7.6.3's
+// GCPnts_QuasiUniformDeflection gave such arcs (more than about 6.1 radians, or a whole turn
+// starting off 0) as their two ends, and a hole rebuilt from a section's ellipse then had no
+// polygon (occt-misc Bottom.brep). Every chord's middle lies within the deflection.
+TEST(EdgeSamples, EllipseArcsOfNearlyAWholeTurnAreSampledAlongTheArc) {
+  const Handle(Geom_Curve) ellipse =
+      new Geom_Ellipse(gp_Elips(gp_Ax2(gp_Pnt(0, 0, 0), gp_Dir(0, 0, 1)), 10, 5));
+  const double deflection = 0.02;
+  for (const auto& [first, last] : {std::pair{0.1, 6.25}, std::pair{-0.098, 6.185}, std::pair{1.0, 7.2},
+                                    std::pair{0.0, 6.0}, std::pair{-0.3, 0.3}}) {
+    const TopoDS_Edge edge = BRepBuilderAPI_MakeEdge(ellipse, first, last).Edge();
+    const CurveSamples s = sampleEdge(edge, deflection);
+    // The arc is 40 mm round or less; its chords within 0.02 mm need more than 20 points
+    // where it turns by more than 6 radians.
+    if (last - first > 6) EXPECT_GT(s.p.size(), 20u) << first << " " << last;
+    ASSERT_GE(s.t.size(), 2u);
+    double from, to;  // the edge's range: OCCT moves a periodic one to start in [0, 2π)
+    BRep_Tool::Range(edge, from, to);
+    EXPECT_NEAR(to - from, last - first, 1e-9);
+    EXPECT_NEAR(s.t.front(), from, 1e-9);
+    EXPECT_NEAR(s.t.back(), to, 1e-9);
+    for (size_t i = 0; i + 1 < s.t.size(); ++i) {
+      const gp_Pnt mid = ellipse->Value((s.t[i] + s.t[i + 1]) / 2);
+      const gp_Vec chord(s.p[i], s.p[i + 1]), am(s.p[i], mid);
+      const double f = std::clamp(am.Dot(chord) / chord.SquareMagnitude(), 0.0, 1.0);
+      EXPECT_LE((am - chord * f).Magnitude(), 1.01 * deflection) << first << " " << last << " chord " << i;
+    }
+  }
 }
 
 }  // namespace

@@ -38,7 +38,8 @@ void refine(const Adaptor3d_Curve& curve, double t0, const gp_Pnt& p0, double t1
 CurveSamples sampleCurve(const Adaptor3d_Curve& curve, double first, double last, double deflection) {
   CurveSamples out;
   // Lines and conics are sampled right as they are (their chords are even steps of a known
-  // curvature); only the others pay for a check of every chord.
+  // curvature; but see the two-point answer below); only the others pay for a check of every
+  // chord.
   const GeomAbs_CurveType type = curve.GetType();
   const bool check = type != GeomAbs_Line && type != GeomAbs_Circle && type != GeomAbs_Ellipse &&
                      type != GeomAbs_Hyperbola && type != GeomAbs_Parabola;
@@ -56,8 +57,13 @@ CurveSamples sampleCurve(const Adaptor3d_Curve& curve, double first, double last
   for (size_t k = 0; k + 1 < breaks.size(); ++k) {
     GCPnts_QuasiUniformDeflection sampler(curve, deflection, breaks[k], breaks[k + 1]);
     if (!sampler.IsDone() || sampler.NbPoints() < 2) return {};
+    // OCCT 7.6.3 gives an ellipse's arc of more than about 6.1 radians (short of a whole
+    // turn, or a whole turn not starting at 0) as its two ends alone: occt-misc Bottom.brep's
+    // holes, rebuilt from a section's ellipse, were lost from their polygons. Two points of a
+    // curve that is not a line are checked as any other curve's are.
+    const bool checkPiece = check || (type != GeomAbs_Line && sampler.NbPoints() == 2);
     for (int i = out.t.empty() ? 1 : 2; i <= sampler.NbPoints(); ++i) {
-      if (check && !out.t.empty())
+      if (checkPiece && !out.t.empty())
         refine(curve, out.t.back(), out.p.back(), sampler.Parameter(i), sampler.Value(i), deflection, 0, out);
       out.t.push_back(sampler.Parameter(i));
       out.p.push_back(sampler.Value(i));
