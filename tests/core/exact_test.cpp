@@ -18,6 +18,7 @@
 #include <BRep_Tool.hxx>
 #include <Bnd_Box.hxx>
 #include <GProp_GProps.hxx>
+#include <Geom_Hyperbola.hxx>
 #include <Interface_Static.hxx>
 #include <STEPControl_Reader.hxx>
 #include <TopExp.hxx>
@@ -25,6 +26,7 @@
 #include <TopoDS.hxx>
 #include <TopoDS_Compound.hxx>
 #include <gp_Circ.hxx>
+#include <gp_Hypr.hxx>
 #include <gp_Pln.hxx>
 
 #include <cmath>
@@ -344,6 +346,52 @@ TEST(RebuiltFaces, SlotsCutFromASectionKeepItsArcs) {
   ASSERT_FALSE(off.IsNull());
   const TopoDS_Face whole = BRepBuilderAPI_MakeFace(plane, BRepBuilderAPI_MakeWire(circle(10)).Wire()).Face();
   EXPECT_NEAR(area(off), area(BRepAlgoAPI_Cut(whole, slots).Shape()), 1e-3);
+}
+
+// Slots cut across a nearly straight hyperbola, as a cone's section far from its vertex
+// is (occt-misc Top.brep). Its polygon has 3 points over 50 mm, and a parameter
+// interpolated along a segment lay up to a millimetre off the point on the curve, too far
+// for the slots' crossings to be refined: the rebuild gave up, and every such patch went
+// to the Boolean cut. The crossings now lie on both curves, and the face is the Boolean's.
+TEST(RebuiltFaces, SlotsCutAcrossANearlyStraightHyperbolaMeetItOnTheCurve) {
+  const gp_Pln plane(gp_Pnt(0, 0, 0), gp_Dir(0, 0, 1));
+  const double a = 4.47, b = 3.72, t0 = 2.58, t1 = 3.42;
+  const Handle(Geom_Curve) hyperbola =
+      new Geom_Hyperbola(gp_Hypr(gp_Ax2(gp_Pnt(0, 0, 0), gp_Dir(0, 0, 1)), a, b));
+  const gp_Pnt p0 = hyperbola->Value(t0), p1 = hyperbola->Value(t1);
+  const gp_Vec inward(0.64 * 15, -0.77 * 15, 0);  // across the asymptote, to the branch's inside
+  const gp_Pnt q0 = p0.Translated(inward), q1 = p1.Translated(inward);
+  BRepBuilderAPI_MakeWire outline(
+      BRepBuilderAPI_MakeEdge(hyperbola, t0, t1).Edge(), BRepBuilderAPI_MakeEdge(p1, q1).Edge(),
+      BRepBuilderAPI_MakeEdge(q1, q0).Edge(), BRepBuilderAPI_MakeEdge(q0, p0).Edge());
+  ASSERT_TRUE(outline.IsDone());
+  const TopoDS_Face section = BRepBuilderAPI_MakeFace(plane, outline.Wire()).Face();
+  TopoDS_Compound slots;
+  BRep_Builder builder;
+  builder.MakeCompound(slots);
+  for (int k = 1; k <= 5; ++k) {  // upright slots, 0.5 mm wide, from outside to 6 mm in
+    const double x = p0.X() + (p1.X() - p0.X()) * k / 6, y = b * std::sinh(std::acosh(x / a));
+    BRepBuilderAPI_MakePolygon p(gp_Pnt(x - 0.25, y - 6, 0), gp_Pnt(x + 0.25, y - 6, 0),
+                                 gp_Pnt(x + 0.25, y + 3, 0), gp_Pnt(x - 0.25, y + 3, 0), Standard_True);
+    builder.Add(slots, BRepBuilderAPI_MakeFace(plane, p.Wire()).Face());
+  }
+  const SliceFrame frame = makeSliceFrame({0, 0, 1}, {0, 1, 0});
+  const TopoDS_Shape rebuilt = rebuiltFaces(
+      {section, slots}, [](const std::vector<Region2d>& p) { return p[0].subtract(p[1]); }, frame, 0, 0.0244);
+  ASSERT_FALSE(rebuilt.IsNull());
+  EXPECT_TRUE(BRepCheck_Analyzer(rebuilt).IsValid());
+  int pieces = 0;
+  for (TopExp_Explorer e(rebuilt, TopAbs_EDGE); e.More(); e.Next())
+    pieces += BRepAdaptor_Curve(TopoDS::Edge(e.Current())).GetType() == GeomAbs_Hyperbola;
+  EXPECT_EQ(pieces, 6);
+  for (TopExp_Explorer v(rebuilt, TopAbs_VERTEX); v.More(); v.Next())
+    EXPECT_LT(BRep_Tool::Tolerance(TopoDS::Vertex(v.Current())), 1e-5);
+  const auto area = [](const TopoDS_Shape& s) {
+    GProp_GProps props;
+    BRepGProp::SurfaceProperties(s, props);
+    return props.Mass();
+  };
+  EXPECT_NEAR(area(rebuilt), area(BRepAlgoAPI_Cut(section, slots).Shape()), 1e-4);
 }
 
 // A mesh patch's outline loses the points that add nothing within the tolerance: a circle of
