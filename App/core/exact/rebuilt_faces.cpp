@@ -470,7 +470,7 @@ TopoDS_Shape rebuiltFaces(const std::vector<TopoDS_Shape>& shapes,
       for (const TopoDS_Edge& e : edges) builder.Add(wire, e);
       wire.Closed(Standard_True);
       if (!face)
-        face.emplace(plane, wire, Standard_True);
+        face.emplace(plane, wire, Standard_False);  // outer loops run counter-clockwise: no check
       else
         face->Add(wire);
       if (!face->IsDone()) return {};
