@@ -21,6 +21,7 @@
 #include <TopoDS.hxx>
 #include <nlohmann/json.hpp>
 
+#include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
@@ -225,6 +226,52 @@ TEST(AssemblyOutput, PlaneCurvesAreTrimmedToTheirEdges) {
     BRep_Tool::CurveOnSurface(TopoDS::Edge(e.Current()), face, first, last, &stored);
     EXPECT_FALSE(stored);
   }
+}
+
+// A piece of a closed curve (a section's loop between two slots): a periodic cubic
+// B-spline through eight points round a circle, its edge the parameters 1 to 4 (of 8),
+// closed by a straight edge. Its 2D curve is cut to the edge's range once, no longer
+// periodic; the whole loop, an edge of its own, keeps its periodic curve.
+TEST(AssemblyOutput, PiecesOfClosedPlaneCurvesAreTrimmedToTheirEdges) {
+  TColgp_Array1OfPnt poles(1, 8);
+  for (int k = 0; k < 8; ++k) poles(k + 1) = {20 * std::cos(M_PI * k / 4), 20 * std::sin(M_PI * k / 4), 0};
+  TColStd_Array1OfReal knots(1, 9);
+  TColStd_Array1OfInteger mults(1, 9);
+  for (int k = 0; k < 9; ++k) knots(k + 1) = k, mults(k + 1) = 1;
+  const Handle(Geom_BSplineCurve) loop = new Geom_BSplineCurve(poles, knots, mults, 3, Standard_True);
+  ASSERT_TRUE(loop->IsPeriodic());
+  const auto curveOf = [](const TopoDS_Shape& shape, double& first, double& last) {
+    const TopoDS_Face f = TopoDS::Face(TopExp_Explorer(shape, TopAbs_FACE).Current());
+    for (TopExp_Explorer e(f, TopAbs_EDGE); e.More(); e.Next())
+      if (auto c = Handle(Geom2d_BSplineCurve)::DownCast(
+              BRep_Tool::CurveOnSurface(TopoDS::Edge(e.Current()), f, first, last)))
+        return c;
+    return Handle(Geom2d_BSplineCurve)();
+  };
+  const TopoDS_Edge piece = BRepBuilderAPI_MakeEdge(loop, 1, 4);
+  const TopoDS_Edge chord = BRepBuilderAPI_MakeEdge(loop->Value(4), loop->Value(1));
+  const TopoDS_Face face = BRepBuilderAPI_MakeFace(BRepBuilderAPI_MakeWire(piece, chord).Wire(), true);
+  ASSERT_FALSE(face.IsNull());
+  double first = 0, last = 0, whole0 = 0, whole1 = 0;
+  const Handle(Geom2d_BSplineCurve) trimmed = curveOf(withPlaneCurves(face, true), first, last);
+  const Handle(Geom2d_BSplineCurve) whole = curveOf(withPlaneCurves(face), whole0, whole1);
+  ASSERT_FALSE(trimmed.IsNull());
+  ASSERT_FALSE(whole.IsNull());
+  EXPECT_TRUE(whole->IsPeriodic());  // as the projection makes it
+  EXPECT_FALSE(trimmed->IsPeriodic());
+  EXPECT_NEAR(first, 1, 1e-12);
+  EXPECT_NEAR(last, 4, 1e-12);
+  EXPECT_NEAR(trimmed->FirstParameter(), 1, 1e-9);
+  EXPECT_NEAR(trimmed->LastParameter(), 4, 1e-9);
+  for (double t = 1; t <= 4 + 1e-9; t += 0.25)
+    EXPECT_LT(trimmed->Value(t).Distance(whole->Value(t)), 1e-9) << t;
+  // The whole loop as one edge: nothing to cut.
+  const TopoDS_Face disc =
+      BRepBuilderAPI_MakeFace(BRepBuilderAPI_MakeWire(BRepBuilderAPI_MakeEdge(loop)).Wire(), true);
+  ASSERT_FALSE(disc.IsNull());
+  const Handle(Geom2d_BSplineCurve) round = curveOf(withPlaneCurves(disc, true), first, last);
+  ASSERT_FALSE(round.IsNull());
+  EXPECT_TRUE(round->IsPeriodic());
 }
 
 TEST(AssemblyOutput, GltfErrorsAreIoErrors) {

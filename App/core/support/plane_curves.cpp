@@ -29,10 +29,17 @@ TopoDS_Shape withPlaneCurves(const TopoDS_Shape& shape, bool trimmed) {
       double first = 0, last = 0;
       const Handle(Geom2d_BSplineCurve) curve =
           Handle(Geom2d_BSplineCurve)::DownCast(BRep_Tool::CurveOnSurface(edge, face, first, last));
-      if (curve.IsNull() || curve->IsPeriodic() || BRep_Tool::IsClosed(edge, face)) continue;
-      const double from = std::max(first, curve->FirstParameter()),
-                   to = std::min(last, curve->LastParameter());
-      if ((from <= curve->FirstParameter() && to >= curve->LastParameter()) || !(to - from > 1e-9)) continue;
+      if (curve.IsNull() || BRep_Tool::IsClosed(edge, face)) continue;
+      double from = first, to = last;
+      if (curve->IsPeriodic()) {
+        // A piece of a closed curve (a section's loop between two slots) is cut too, as the
+        // writer's bounding does each time; the whole loop is left as it is.
+        if (!(to - from > 1e-9) || to - from >= curve->Period() - 1e-9) continue;
+      } else {
+        from = std::max(first, curve->FirstParameter()), to = std::min(last, curve->LastParameter());
+        if ((from <= curve->FirstParameter() && to >= curve->LastParameter()) || !(to - from > 1e-9))
+          continue;
+      }
       // Where OCCT cannot cut it, the curve stays whole: the writer only bounds it longer.
       try {
         const Handle(Geom2d_BSplineCurve) piece = Handle(Geom2d_BSplineCurve)::DownCast(curve->Copy());

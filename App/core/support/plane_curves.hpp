@@ -11,7 +11,8 @@ namespace sliceform {
 // writer while it bounds a face (23 s for rocker-arm's 26,000 edges), the face classifier
 // for every point (a third of its time on occ/Bottom.brep). Stored once, they are looked
 // up, and are the very curves the projection makes. `shape` is left as it was.
-// `trimmed`: a B-spline curve longer than its edge is cut to the edge's range. The STEP
+// `trimmed`: a B-spline curve longer than its edge (or a closed one, of which the edge is
+// a piece) is cut to the edge's range. The STEP
 // writer bounds every 2D curve of a face once for each of the face's edges
 // (TopoDSToStep_MakeStepEdge makes a BRepAdaptor_Surface), and bounding a longer curve
 // copies and cuts it each time (a third of the writer's transfer on occ/Bottom.brep). The
