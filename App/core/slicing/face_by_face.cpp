@@ -9,6 +9,7 @@
 #include <BRepBuilderAPI_MakeFace.hxx>
 #include <BRepClass_FaceClassifier.hxx>
 #include <BRepTools.hxx>
+#include <BRepTopAdaptor_FClass2d.hxx>
 #include <BRep_Builder.hxx>
 #include <BRep_Tool.hxx>
 #include <ElCLib.hxx>
@@ -33,6 +34,7 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <mutex>
 #include <optional>
 #include <tuple>
 
@@ -42,6 +44,17 @@
 #include "support/plane_curves.hpp"
 
 namespace sliceform {
+
+// A face's wires as polygons in its parameters (BRepTopAdaptor_FClass2d), for the points
+// classified on it, and a lock: its Perform is const but reads its sequences by index, and
+// an OCCT sequence moves its own cursor to the item found (NCollection_BaseSequence::Find),
+// so two threads at once crashed (occt-misc CrankArm.brep, one run in twelve).
+struct FaceInside {
+  FaceInside(const TopoDS_Face& face, double tolerance) : polygons(face, tolerance) {}
+  BRepTopAdaptor_FClass2d polygons;
+  std::mutex lock;
+};
+
 namespace {
 
 constexpr double kTwoPi = 2 * M_PI;

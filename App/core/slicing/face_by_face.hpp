@@ -18,7 +18,6 @@
 // no crossing.
 #pragma once
 
-#include <BRepTopAdaptor_FClass2d.hxx>
 #include <Bnd_Box.hxx>
 #include <TopTools_HSequenceOfShape.hxx>
 #include <TopoDS_Edge.hxx>
@@ -29,23 +28,13 @@
 #include <gp_Pln.hxx>
 
 #include <memory>
-#include <mutex>
 #include <optional>
 #include <vector>
 
 namespace sliceform {
 
 class TracedFace;
-
-// A face's wires as polygons in its parameters (BRepTopAdaptor_FClass2d), for the points
-// classified on it, and a lock: its Perform is const but reads its sequences by index, and
-// an OCCT sequence moves its own cursor to the item found (NCollection_BaseSequence::Find),
-// so two threads at once crashed (occt-misc CrankArm.brep, one run in twelve).
-struct FaceInside {
-  FaceInside(const TopoDS_Face& face, double tolerance) : polygons(face, tolerance) {}
-  BRepTopAdaptor_FClass2d polygons;
-  std::mutex lock;
-};
+struct FaceInside;
 
 // OCCT's section curves of `shape` by the faces of `cutters` (BRepAlgoAPI_Section), as both
 // routes that ask OCCT want them: the walking lines approximated with their curves on

@@ -12,12 +12,12 @@ namespace sliceform {
 // for every point (a third of its time on occ/Bottom.brep). Stored once, they are looked
 // up, and are the very curves the projection makes. `shape` is left as it was.
 // `trimmed`: a B-spline curve longer than its edge (or a closed one, of which the edge is
-// a piece) is cut to the edge's range. The STEP
-// writer bounds every 2D curve of a face once for each of the face's edges
-// (TopoDSToStep_MakeStepEdge makes a BRepAdaptor_Surface), and bounding a longer curve
-// copies and cuts it each time (a third of the writer's transfer on occ/Bottom.brep). The
-// file is the same: it carries no 2D curves. Not for the classifier: the same curve, but
-// its points could differ in the last bits.
+// a piece) is cut to the edge's range. The STEP writer bounds every 2D curve of a face
+// once for each of the face's edges (TopoDSToStep_MakeStepEdge makes a
+// BRepAdaptor_Surface), and bounding a longer curve copies and cuts it each time (a third
+// of the writer's transfer on occ/Bottom.brep). The file is the same: it carries no 2D
+// curves. Not for the classifier: the same curve, but its points could differ in the last
+// bits.
 TopoDS_Shape withPlaneCurves(const TopoDS_Shape& shape, bool trimmed = false);
 
 }  // namespace sliceform
