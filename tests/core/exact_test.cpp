@@ -66,6 +66,12 @@ Design design(const Model& model, int slices = 32) {
   return d;
 }
 
+double area(const TopoDS_Shape& shape) {
+  GProp_GProps props;
+  BRepGProp::SurfaceProperties(shape, props);
+  return props.Mass();
+}
+
 // The emitted exact faces of solids with holes and voids: one piece each, no interlocks.
 void expectBuildable(const TopoDS_Shape& shape) {
   const Design d = design(modelFromShape(shape, "test solid"));
@@ -266,11 +272,6 @@ TEST(RebuiltFaces, UnionOfSectionsKeepsArcsAndTheFusedArea) {
   for (TopExp_Explorer v(rebuilt, TopAbs_VERTEX); v.More(); v.Next())
     EXPECT_LT(BRep_Tool::Tolerance(TopoDS::Vertex(v.Current())), 1e-5);  // the crossings are exact
   BRepAlgoAPI_Fuse fuse(sections[0], sections[1]);
-  const auto area = [](const TopoDS_Shape& s) {
-    GProp_GProps props;
-    BRepGProp::SurfaceProperties(s, props);
-    return props.Mass();
-  };
   // The corners left out lie within 2 deflections of the arc: at most 2e-3 times its length.
   EXPECT_NEAR(area(rebuilt), area(fuse.Shape()), 2 * deflection * 2 * M_PI * 10);
   EXPECT_NEAR(area(rebuilt), area(fuse.Shape()), 1e-3);  // in fact far less: 128 specks
@@ -329,11 +330,6 @@ TEST(RebuiltFaces, SlotsCutFromASectionKeepItsArcs) {
   EXPECT_EQ(arcs, 3);
   for (TopExp_Explorer v(rebuilt, TopAbs_VERTEX); v.More(); v.Next())
     EXPECT_LT(BRep_Tool::Tolerance(TopoDS::Vertex(v.Current())), 1e-5);
-  const auto area = [](const TopoDS_Shape& s) {
-    GProp_GProps props;
-    BRepGProp::SurfaceProperties(s, props);
-    return props.Mass();
-  };
   BRepAlgoAPI_Cut boolean(disc.Face(), slots);
   EXPECT_NEAR(area(rebuilt), area(boolean.Shape()), 1e-6);
   // The outer circle's vertex moved 20 µm off it, within a tolerance that covers it: the
@@ -386,11 +382,6 @@ TEST(RebuiltFaces, SlotsCutAcrossANearlyStraightHyperbolaMeetItOnTheCurve) {
   EXPECT_EQ(pieces, 6);
   for (TopExp_Explorer v(rebuilt, TopAbs_VERTEX); v.More(); v.Next())
     EXPECT_LT(BRep_Tool::Tolerance(TopoDS::Vertex(v.Current())), 1e-5);
-  const auto area = [](const TopoDS_Shape& s) {
-    GProp_GProps props;
-    BRepGProp::SurfaceProperties(s, props);
-    return props.Mass();
-  };
   EXPECT_NEAR(area(rebuilt), area(BRepAlgoAPI_Cut(section, slots).Shape()), 1e-4);
 }
 
