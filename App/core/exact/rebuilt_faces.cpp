@@ -26,6 +26,7 @@
 
 #include "slicing/brep_slicer.hpp"
 #include "slicing/edge_samples.hpp"
+#include "slicing/surface_sections.hpp"
 
 namespace sliceform {
 namespace {
@@ -233,24 +234,12 @@ bool sameRegion(const Region2d& made, const Region2d& region, double deflection)
 // curve's speed varies along the segment: a nearly straight hyperbola of occt-misc Top.brep,
 // sampled at 3 points over 50 mm, was off by up to a millimetre, and its crossings with the
 // slots then too far to refine, so the patch went to the Boolean cut. Where c(t) lies within
-// the deflection of q, t is kept as it is; else Newton's method on |c(t) - q|², kept only
-// where it comes nearer.
+// the deflection of q, t is kept as it is; else the foot (footOnCurve), kept inside the
+// curve and only where it comes nearer.
 double footParameter(const Source& s, double t, const gp_Pnt& q, double deflection) {
-  gp_Pnt c;
-  gp_Vec d1, d2;
-  s.curve->D0(t, c);
-  const double start = c.Distance(q);
+  const double start = s.curve->Value(t).Distance(q);
   if (start <= deflection) return t;
-  double u = t;
-  for (int k = 0; k < 12; ++k) {
-    s.curve->D2(u, c, d1, d2);
-    const gp_Vec r(q, c);
-    const double slope = r.Dot(d1), curvature = d1.Dot(d1) + r.Dot(d2);
-    if (!(curvature > 0)) break;
-    const double step = slope / curvature;
-    u -= step;
-    if (std::abs(step) * d1.Magnitude() < 1e-9) break;
-  }
+  double u = footOnCurve(*s.curve, q, t);
   if (!s.curve->IsPeriodic()) u = std::clamp(u, s.curve->FirstParameter(), s.curve->LastParameter());
   return s.curve->Value(u).Distance(q) < start ? u : t;
 }

@@ -7,21 +7,10 @@
 #include <BRepBndLib.hxx>
 #include <BRepBuilderAPI_MakeEdge.hxx>
 #include <BRepBuilderAPI_MakeFace.hxx>
-#include <BRepClass_FaceClassifier.hxx>
-#include <BRepTools.hxx>
-#include <BRepTopAdaptor_FClass2d.hxx>
 #include <BRep_Builder.hxx>
 #include <BRep_Tool.hxx>
 #include <ElCLib.hxx>
-#include <ElSLib.hxx>
-#include <GeomAPI_ProjectPointOnCurve.hxx>
 #include <Geom_BSplineCurve.hxx>
-#include <Geom_Circle.hxx>
-#include <Geom_Ellipse.hxx>
-#include <Geom_Hyperbola.hxx>
-#include <Geom_Line.hxx>
-#include <Geom_Parabola.hxx>
-#include <IntAna_QuadQuadGeo.hxx>
 #include <Standard_Failure.hxx>
 #include <TopExp.hxx>
 #include <TopExp_Explorer.hxx>
@@ -34,26 +23,16 @@
 #include <cmath>
 #include <limits>
 #include <map>
-#include <mutex>
 #include <optional>
 #include <tuple>
 
-#include "slicing/torus_section.hpp"
+#include "slicing/face_inside.hpp"
+#include "slicing/surface_sections.hpp"
 #include "slicing/traced_section.hpp"
 #include "support/parallel.hpp"
 #include "support/plane_curves.hpp"
 
 namespace sliceform {
-
-// A face's wires as polygons in its parameters (BRepTopAdaptor_FClass2d), for the points
-// classified on it, and a lock: its Perform is const but reads its sequences by index, and
-// an OCCT sequence moves its own cursor to the item found (NCollection_BaseSequence::Find),
-// so two threads at once crashed (occt-misc CrankArm.brep, one run in twelve).
-struct FaceInside {
-  FaceInside(const TopoDS_Face& face, double tolerance) : polygons(face, tolerance) {}
-  BRepTopAdaptor_FClass2d polygons;
-  std::mutex lock;
-};
 
 namespace {
 
@@ -138,208 +117,6 @@ bool crossings(const TopoDS_Edge& edge, double edgeTolerance, const gp_Dir& n, d
   return true;
 }
 
-// A curve of a face's section (a conic, or a torus's loop), the parameters it spans, and
-// how far it may be from the exact intersection (0 for a conic).
-struct Curve {
-  Handle(Geom_Curve) curve;
-  double first = 0, last = 0;
-  bool periodic = false;
-  double tolerance = 0;
-};
-
-// The parameter range of an unbounded curve that covers `box`: past it the curve is
-// outside the face, so the pieces there are classified out.
-void boundTo(const Bnd_Box& box, Curve& c) {
-  const gp_Pnt centre((box.CornerMin().XYZ() + box.CornerMax().XYZ()) / 2);
-  const double reach = centre.Distance(box.CornerMax());
-  if (auto line = Handle(Geom_Line)::DownCast(c.curve)) {
-    const double t = ElCLib::Parameter(line->Lin(), centre);
-    c.first = t - reach - 1, c.last = t + reach + 1;
-  } else if (auto parabola = Handle(Geom_Parabola)::DownCast(c.curve)) {
-    // |P(t) - P(0)| >= |t|.
-    const double t = parabola->Location().Distance(centre) + reach + 1;
-    c.first = -t, c.last = t;
-  } else if (auto hyperbola = Handle(Geom_Hyperbola)::DownCast(c.curve)) {
-    // |P(t) - P(0)| >= a (cosh t - 1).
-    const double t =
-        std::acosh((hyperbola->Location().Distance(centre) + reach + 1) / hyperbola->MajorRadius() + 1);
-    c.first = -t, c.last = t;
-  }
-}
-
-// The curves where the plane cuts the surface of `face`; false where unsure.
-bool surfaceCurves(const BRepAdaptor_Surface& s, const gp_Pln& plane, const Bnd_Box& box,
-                   std::vector<Curve>& out) {
-  const double angular = Precision::Angular(), confusion = Precision::Confusion();
-  IntAna_QuadQuadGeo q;
-  switch (s.GetType()) {
-    case GeomAbs_Plane:
-      q.Perform(plane, s.Plane(), angular, confusion);
-      break;
-    case GeomAbs_Cylinder:
-      q.Perform(plane, s.Cylinder(), angular, confusion);
-      break;
-    case GeomAbs_Cone:
-      q.Perform(plane, s.Cone(), angular, confusion);
-      break;
-    case GeomAbs_Sphere:
-      q.Perform(plane, s.Sphere());
-      break;
-    case GeomAbs_Torus:
-      q.Perform(plane, s.Torus(), confusion);
-      break;
-    default:
-      break;
-  }
-  // A torus along the plane: its loops (slicing/torus_section.hpp).
-  if (s.GetType() == GeomAbs_Torus && (!q.IsDone() || q.TypeInter() == IntAna_NoGeometricSolution)) {
-    const std::optional<TorusSection> section = torusSection(s.Torus(), plane);
-    if (!section) return false;
-    for (const Handle(Geom_BSplineCurve) & loop : section->loops) {
-      Curve c;
-      c.curve = loop;
-      c.first = loop->FirstParameter(), c.last = loop->LastParameter();
-      c.periodic = true;
-      c.tolerance = section->tolerance;
-      out.push_back(c);
-    }
-    return true;
-  }
-  // B-splines, surfaces of revolution, tori cut aslant: not here (traced, or cutAlone).
-  // Walking them with GeomInt_IntSS was tried: as fast as the section's own walk, but its
-  // curves made exact patches break rules their polygons keep (occt-misc Bottom.brep: 9
-  // patches emitted as polygons instead of 3; MODERN_Sink_1: 9 instead of 2).
-  if (s.GetType() > GeomAbs_Torus || !q.IsDone() || q.TypeInter() == IntAna_NoGeometricSolution) return false;
-  const IntAna_ResultType type = q.TypeInter();
-  if (type == IntAna_Empty) return true;
-  // One line on a cylinder or cone, one circle on a torus: the plane is tangent to it.
-  if (type == IntAna_Line && q.NbSolutions() < 2 && s.GetType() != GeomAbs_Plane) return false;
-  if (type == IntAna_Circle && q.NbSolutions() < 2 && s.GetType() == GeomAbs_Torus) return false;
-  for (Standard_Integer i = 1; i <= q.NbSolutions(); ++i) {
-    Curve c;
-    c.periodic = type == IntAna_Circle || type == IntAna_Ellipse;
-    c.first = 0, c.last = kTwoPi;
-    switch (type) {
-      case IntAna_Line:
-        c.curve = new Geom_Line(q.Line(i));
-        break;
-      case IntAna_Circle:
-        c.curve = new Geom_Circle(q.Circle(i));
-        break;
-      case IntAna_Ellipse:
-        c.curve = new Geom_Ellipse(q.Ellipse(i));
-        break;
-      case IntAna_Parabola:
-        c.curve = new Geom_Parabola(q.Parabola(i));
-        break;
-      case IntAna_Hyperbola:
-        c.curve = new Geom_Hyperbola(q.Hyperbola(i));
-        break;
-      default:
-        return false;  // a point, the plane itself
-    }
-    if (!c.periodic) boundTo(box, c);
-    out.push_back(c);
-  }
-  return true;
-}
-
-// The foot of `p` on `curve` by Newton's method on the squared distance, from `t`, where
-// that comes nearer. ElCLib's parameter of a point off a conic is not its nearest point's:
-// on an ellipse the offset across the major axis counts as many times over as the point
-// lies further along the ellipse than the minor radius, up to the radii's ratio (a plane
-// nearly along a cylinder's axis on occ/Top.brep: an ellipse 8972 x 28.6 mm, and a crossing
-// 4 nm off the cylinder read as 1.2 µm off its section, which refused the plane).
-double foot(const Geom_Curve& curve, const gp_Pnt& p, double t) {
-  double best = curve.Value(t).SquareDistance(p);
-  for (int i = 0; i < 8; ++i) {
-    gp_Pnt c;
-    gp_Vec d1, d2;
-    curve.D2(t, c, d1, d2);
-    const gp_Vec r(p, c);
-    const double slope = r.Dot(d1), bend = d1.SquareMagnitude() + r.Dot(d2);
-    if (!(bend > 0)) break;
-    const double next = t - slope / bend, distance = curve.Value(next).SquareDistance(p);
-    if (!(distance < best)) break;
-    best = distance, t = next;
-  }
-  return t;
-}
-
-// The parameter of `p` on `c` and its distance from it.
-std::pair<double, double> project(const Curve& c, const gp_Pnt& p) {
-  double t;
-  if (auto line = Handle(Geom_Line)::DownCast(c.curve))
-    t = ElCLib::Parameter(line->Lin(), p);
-  else if (auto circle = Handle(Geom_Circle)::DownCast(c.curve))
-    t = ElCLib::Parameter(circle->Circ(), p);
-  else if (auto ellipse = Handle(Geom_Ellipse)::DownCast(c.curve))
-    t = foot(*ellipse, p, ElCLib::Parameter(ellipse->Elips(), p));
-  else if (auto parabola = Handle(Geom_Parabola)::DownCast(c.curve))
-    t = foot(*parabola, p, ElCLib::Parameter(parabola->Parab(), p));
-  else if (auto hyperbola = Handle(Geom_Hyperbola)::DownCast(c.curve))
-    t = foot(*hyperbola, p, ElCLib::Parameter(hyperbola->Hypr(), p));
-  else {
-    // A torus's loop: closed, so the projection has a minimum inside it.
-    GeomAPI_ProjectPointOnCurve projection(p, c.curve, c.first, c.last);
-    if (projection.NbPoints() == 0) return {0, std::numeric_limits<double>::max()};
-    return {projection.LowerDistanceParameter(), projection.LowerDistance()};
-  }
-  return {t, c.curve->Value(t).Distance(p)};
-}
-
-// The parameters of a point on a torus. ElSLib takes the tube's circle on the point's side
-// of the axis; on a spindle torus (R < r) the point may lie on the circle past the axis,
-// at u + π: the one whose circle the point is nearer is its own.
-void torusParameters(const gp_Torus& torus, const gp_Pnt& p, double& u, double& v) {
-  ElSLib::Parameters(torus, p, u, v);
-  const double big = torus.MajorRadius(), small = torus.MinorRadius();
-  if (big >= small) return;
-  const gp_Ax3& frame = torus.Position();
-  const gp_XYZ d = p.XYZ() - frame.Location().XYZ();
-  const double x = d.Dot(frame.XDirection().XYZ()), y = d.Dot(frame.YDirection().XYZ());
-  const double z = d.Dot(frame.Direction().XYZ()), across = std::hypot(x, y);
-  if (std::abs(std::hypot(across + big, z) - small) < std::abs(std::hypot(across - big, z) - small))
-    u = std::atan2(y, x) + M_PI, v = std::atan2(z, -across - big);
-}
-
-// Where a point of the surface lies on the face: by the face's polygons in its parameters
-// (`inside`, made once a face) where the point is clear of them by more than their
-// deflection, else (and where OCCT could not make them) by BRepClass_FaceClassifier, as
-// the polygons' own test then asks. The classifier alone explored the face's topology and
-// intersected every edge with a ray, for each point: 9 % of occt-misc Bottom.brep's run.
-TopAbs_State classify(const TopoDS_Face& face, FaceInside* inside, const BRepAdaptor_Surface& s,
-                      const double uv[4], const gp_Pnt& p) {
-  double u = 0, v = 0;
-  switch (s.GetType()) {
-    case GeomAbs_Plane:
-      ElSLib::Parameters(s.Plane(), p, u, v);
-      break;
-    case GeomAbs_Cylinder:
-      ElSLib::Parameters(s.Cylinder(), p, u, v);
-      break;
-    case GeomAbs_Cone:
-      ElSLib::Parameters(s.Cone(), p, u, v);
-      break;
-    case GeomAbs_Sphere:
-      ElSLib::Parameters(s.Sphere(), p, u, v);
-      break;
-    case GeomAbs_Torus:
-      torusParameters(s.Torus(), p, u, v);
-      break;
-    default:
-      return TopAbs_ON;  // no curves are made on other surfaces
-  }
-  if (s.IsUPeriodic()) u = ElCLib::InPeriod(u, uv[0], uv[0] + s.UPeriod());
-  if (s.IsVPeriodic()) v = ElCLib::InPeriod(v, uv[2], uv[2] + s.VPeriod());
-  if (inside) {
-    const std::lock_guard<std::mutex> lock(inside->lock);
-    return inside->polygons.Perform(gp_Pnt2d(u, v), Standard_False);  // u, v put in the period above
-  }
-  const BRepClass_FaceClassifier classifier(face, gp_Pnt2d(u, v), Precision::PConfusion());
-  return classifier.State();
-}
-
 // A vertex at a crossing of a solid's edge, or at a free end of a curve; `own` when this
 // route made it, false for a vertex of OCCT's section, which may be the solid's own.
 struct End {
@@ -348,7 +125,7 @@ struct End {
   bool own = true;
 };
 
-TopoDS_Edge piece(const Curve& c, const End& a, double tb, const End& b) {
+TopoDS_Edge piece(const SectionCurve& c, const End& a, double tb, const End& b) {
   BRep_Builder builder;
   // The vertices cover where the curve meets them: a crossing lies on the solid's edge,
   // which is only within its tolerance of the face. Only the route's own vertices are
@@ -468,7 +245,7 @@ bool joinAtCrossings(const std::vector<FaceByFace::AloneEdge>& edges, const std:
       else if (curve->Value(end.t).Distance(BRep_Tool::Pnt(end.vertex)) > BRep_Tool::Tolerance(end.vertex))
         return false;  // OCCT's vertex does not cover the end of its own edge
     }
-    Curve c;
+    SectionCurve c;
     c.curve = curve, c.first = first, c.last = last, c.tolerance = BRep_Tool::Tolerance(e.edge);
     out->Append(piece(c, at[0], last, at[1]));
   }
@@ -536,16 +313,18 @@ FaceByFace::FaceByFace(const TopoDS_Shape& solid, const gp_Dir& normal) : normal
     const auto [lo, hi] = box.IsVoid() ? std::pair{1.0, 0.0} : along(box, normal);  // empty: never crossed
     edges_.push_back({e, lo, hi, std::max(BRep_Tool::Tolerance(e), Precision::Confusion())});
   }
+  // What the classifier reads: of a plane, a copy with its edges' 2D curves stored, made
+  // once (withPlaneCurves); else the face itself.
+  std::vector<TopoDS_Face> classified;
   for (TopExp_Explorer it(solid, TopAbs_FACE); it.More(); it.Next()) {
     Face f;
     f.face = TopoDS::Face(it.Current());
     BRepBndLib::Add(f.face, f.box);
     std::tie(f.lo, f.hi) = along(f.box, normal);
-    BRepTools::UVBounds(f.face, f.uv[0], f.uv[1], f.uv[2], f.uv[3]);
     const BRepAdaptor_Surface surface(f.face, Standard_False);
     f.solved = solvedBy(surface, normal);
-    f.classified = f.face;
-    if (f.solved && surface.GetType() == GeomAbs_Plane) f.classified = TopoDS::Face(withPlaneCurves(f.face));
+    classified.push_back(
+        f.solved && surface.GetType() == GeomAbs_Plane ? TopoDS::Face(withPlaneCurves(f.face)) : f.face);
     for (TopExp_Explorer e(f.face, TopAbs_EDGE); e.More(); e.Next()) {
       const int index = edges.FindIndex(e.Current()) - 1;
       if (std::find(f.edges.begin(), f.edges.end(), index) == f.edges.end()) f.edges.push_back(index);
@@ -555,11 +334,7 @@ FaceByFace::FaceByFace(const TopoDS_Shape& solid, const gp_Dir& normal) : normal
   parallelFor(faces_.size(), [&](size_t i) {
     Face& f = faces_[i];
     if (f.solved) {
-      try {
-        f.inside = std::make_shared<FaceInside>(f.classified, Precision::PConfusion());
-      } catch (const Standard_Failure&) {
-        f.inside.reset();  // classified by BRepClass_FaceClassifier alone
-      }
+      f.inside = std::make_shared<const FaceInside>(f.face, classified[i]);
       return;
     }
     try {
@@ -647,8 +422,8 @@ Handle(TopTools_HSequenceOfShape) FaceByFace::planeEdges(const gp_Pln& plane, do
       continue;
     }
     const BRepAdaptor_Surface s(f.face, Standard_False);
-    std::vector<Curve> curves;
-    if (!surfaceCurves(s, plane, f.box, curves)) return nullptr;
+    std::vector<SectionCurve> curves;
+    if (!planeSurfaceCurves(s, plane, f.box, curves)) return nullptr;
     // Each crossing of the face's edges to every curve it lies on.
     std::vector<std::vector<End>> ends(curves.size());
     const double faceTolerance = BRep_Tool::Tolerance(f.face);
@@ -656,7 +431,7 @@ Handle(TopTools_HSequenceOfShape) FaceByFace::planeEdges(const gp_Pln& plane, do
       for (const auto& [p, vertex] : crossed[e]) {
         bool on = false;
         for (size_t k = 0; k < curves.size(); ++k) {
-          const auto [t, distance] = project(curves[k], p);
+          const auto [t, distance] = projectOnSection(curves[k], p);
           // 10 nm more than the tolerances say: edges of real files stray from their faces
           // by up to 1 nm where both claim 0.1 nm (occ/Bottom.brep).
           if (distance <= 2 * (edges_[e].tolerance + faceTolerance + curves[k].tolerance) + 1e-5)
@@ -665,15 +440,14 @@ Handle(TopTools_HSequenceOfShape) FaceByFace::planeEdges(const gp_Pln& plane, do
         if (!on) return nullptr;
       }
     for (size_t k = 0; k < curves.size(); ++k) {
-      const Curve& c = curves[k];
+      const SectionCurve& c = curves[k];
       std::vector<End>& cuts = ends[k];
       const double period = c.last - c.first;
       if (c.periodic)
         for (End& cut : cuts) cut.t = ElCLib::InPeriod(cut.t, c.first, c.last);
       std::sort(cuts.begin(), cuts.end(), [](const End& a, const End& b) { return a.t < b.t; });
       if (c.periodic && cuts.empty()) {
-        if (classify(f.classified, f.inside.get(), s, f.uv, c.curve->Value(c.first + period / 2)) ==
-            TopAbs_IN)
+        if (f.inside->classify(s, c.curve->Value(c.first + period / 2)) == TopAbs_IN)
           out->Append(BRepBuilderAPI_MakeEdge(c.curve, c.first, c.last).Edge());
         continue;
       }
@@ -690,8 +464,7 @@ Handle(TopTools_HSequenceOfShape) FaceByFace::planeEdges(const gp_Pln& plane, do
         const End& b = bounds[(i + 1) % bounds.size()];
         const double tb = i + 1 == bounds.size() ? b.t + period : b.t;
         if (tb - a.t <= 1e-9 * (std::abs(period) + 1)) return nullptr;  // two crossings at one point
-        const TopAbs_State state =
-            classify(f.classified, f.inside.get(), s, f.uv, c.curve->Value((a.t + tb) / 2));
+        const TopAbs_State state = f.inside->classify(s, c.curve->Value((a.t + tb) / 2));
         if (state == TopAbs_ON) return nullptr;
         if (state != TopAbs_IN) continue;
         if (tb > c.last && c.curve->IsKind(STANDARD_TYPE(Geom_BSplineCurve))) {

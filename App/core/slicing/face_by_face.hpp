@@ -4,8 +4,9 @@
 // planes and cylinders). Each face the plane reaches is intersected with it: analytically
 // (IntAna_QuadQuadGeo: planes, cylinders, cones, spheres, tori cut across their axis), or,
 // for a torus cut along its axis, by loops interpolated through exact points
-// (slicing/torus_section.hpp); each curve is cut where the plane crosses the face's edges,
-// and the pieces inside the face are kept. Pieces of two faces meet at the one vertex made
+// (slicing/torus_section.hpp), both in slicing/surface_sections.hpp; each curve is cut
+// where the plane crosses the face's edges, and the pieces inside the face are kept
+// (slicing/face_inside.hpp). Pieces of two faces meet at the one vertex made
 // for each crossing of their shared edge, so the edges chain into loops by shared vertices.
 //
 // A face of another kind (B-spline, surface of revolution, a torus cut aslant) is traced on
@@ -34,7 +35,7 @@
 namespace sliceform {
 
 class TracedFace;
-struct FaceInside;
+class FaceInside;
 
 // OCCT's section curves of `shape` by the faces of `cutters` (BRepAlgoAPI_Section), as both
 // routes that ask OCCT want them: the walking lines approximated with their curves on
@@ -78,15 +79,10 @@ class FaceByFace {
   };
   struct Face {
     TopoDS_Face face;
-    // What the classifier reads: of a plane, a copy with its edges' 2D curves stored, made
-    // once (withPlaneCurves); else the face itself.
-    TopoDS_Face classified;
-    // Of a face this route solves, `classified`'s wires as polygons in its parameters, made
-    // once; null where OCCT could not make them.
-    std::shared_ptr<FaceInside> inside;
+    // Of a face this route solves, where points of its surface lie on it (face_inside.hpp).
+    std::shared_ptr<const FaceInside> inside;
     Bnd_Box box;
     double lo, hi;
-    double uv[4];                              // its parameter box: u min, u max, v min, v max
     std::vector<int> edges;                    // indices into edges_, each once (a seam too)
     bool solved;                               // cut by this route's own curves (solvedBy)
     std::shared_ptr<const TracedFace> traced;  // of a face not solved: its sections traced,
