@@ -172,6 +172,41 @@ TEST(Region2d, GrownSquareHasRoundCorners) {
   EXPECT_NEAR(b.max.x, a + d, 1e-5);
 }
 
+// A slot grown with square corners where they miss the paper: the paper less it is the
+// paper less the slot grown round, to the unit, and a corner beyond the paper is one vertex.
+TEST(Region2d, SlotsGrownSquareOffThePaperCutItAsGrownRound) {
+  const double neck = 0.17;
+  const Region2d paper = Region2d::fromLoops({rect(0, 0, 30, 20), rect(8, 6, 14, 12)})
+                             .subtract(Region2d::fromLoops({{{18, 21}, {20, 10}, {22, 21}}}))
+                             .offset(-neck);
+  // Alone, far from the paper, all four corners square: the rectangle grown by the neck.
+  const Region2d far = Region2d::fromLoops({rect(40, 0, 40.5, 5)});
+  const Region2d farGrown = far.grownSquareOff(neck, paper);
+  ASSERT_EQ(farGrown.paths().size(), 1u);
+  EXPECT_EQ(farGrown.paths().front().size(), 4u);
+  EXPECT_NEAR(farGrown.area(), (0.5 + 2 * neck) * (5 + 2 * neck), 1e-6);
+  std::mt19937 random(23);
+  std::uniform_real_distribution<double> at(-2, 32), length(0.5, 15);
+  int squared = 0, round = 0;
+  for (int i = 0; i < 300; ++i) {
+    const double x = at(random), y = at(random) * 0.7, w = 0.5;
+    const Region2d slot = Region2d::fromLoops({rect(x - w / 2, y, x + w / 2, y + length(random))});
+    const Region2d grown = slot.grownSquareOff(neck, paper), roundly = slot.offset(neck);
+    const Region2d a = paper.subtract(grown), b = paper.subtract(roundly);
+    EXPECT_EQ(a.paths(), b.paths()) << "slot at " << x << ", " << y;
+    EXPECT_TRUE(a.subtract(b).empty() && b.subtract(a).empty());
+    // The grown slot covers the round one, and the corners it squared are each a vertex.
+    EXPECT_TRUE(roundly.subtract(grown).empty());
+    const size_t cut = roundly.paths().front().size() - grown.paths().front().size();
+    cut > 0 ? ++squared : ++round;
+  }
+  EXPECT_GT(squared, 100);  // slots reaching out of the paper, or lying beside it
+  EXPECT_GT(round, 20);     // slots wholly inside it
+  // Not one rectangle (a slot with a round end): grown round.
+  const Region2d roundEnd = Region2d::fromLoops({{{40, 0}, {41, 0}, {41, 3}, {40.5, 3.5}, {40, 3}}});
+  EXPECT_EQ(roundEnd.grownSquareOff(neck, paper).paths(), roundEnd.offset(neck).paths());
+}
+
 TEST(Region2d, IntervalsOnVerticalLineThroughHole) {
   // Square [0,10]² with a hole [3,7] x [4,6.5].
   const Region2d r = Region2d::fromLoops({rect(0, 0, 10, 10), rect(3, 4, 7, 6.5)});

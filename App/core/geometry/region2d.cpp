@@ -99,6 +99,26 @@ UnitBox unitBox(const Box2& b) {
           {Region2d::toUnits(b.max.x), Region2d::toUnits(b.max.y)}};
 }
 
+// Whether the closed box b and the region share no point: no edge meets the box, and the
+// box does not lie inside.
+bool misses(const Paths& paths, const UnitBox& b) {
+  const Path sides = {b.lo, {b.hi.X, b.lo.Y}, b.hi, {b.lo.X, b.hi.Y}};
+  const auto in = [&](IntPoint p) {
+    return b.lo.X <= p.X && p.X <= b.hi.X && b.lo.Y <= p.Y && p.Y <= b.hi.Y;
+  };
+  for (const Path& loop : paths)
+    for (size_t i = 0, n = loop.size(); i < n; ++i) {
+      const IntPoint p = loop[i], q = loop[(i + 1) % n];
+      if (std::max(p.X, q.X) < b.lo.X || std::min(p.X, q.X) > b.hi.X || std::max(p.Y, q.Y) < b.lo.Y ||
+          std::min(p.Y, q.Y) > b.hi.Y)
+        continue;
+      if (in(p) || in(q)) return false;
+      for (size_t k = 0; k < 4; ++k)
+        if (segmentsMeet(p, q, sides[k], sides[(k + 1) % 4])) return false;
+    }
+  return !inside(paths, b.lo);
+}
+
 Path boxPath(const UnitBox& b) {
   return {{b.lo.X, b.lo.Y}, {b.hi.X, b.lo.Y}, {b.hi.X, b.hi.Y}, {b.lo.X, b.hi.Y}};
 }
@@ -342,6 +362,57 @@ Region2d Region2d::offset(double deltaMm) const {
   Region2d r;
   offsetter.Execute(r.paths_, deltaMm * kUnitsPerMm);
   return r;
+}
+
+Region2d Region2d::grownSquareOff(double deltaMm, const Region2d& other) const {
+  Region2d grown = offset(deltaMm);
+  if (!(deltaMm > 0) || paths_.size() != 1 || paths_[0].size() != 4 || grown.paths_.size() != 1) return grown;
+  const Path& rect = paths_[0];
+  const auto [xLo, xHi] = std::minmax({rect[0].X, rect[1].X, rect[2].X, rect[3].X});
+  const auto [yLo, yHi] = std::minmax({rect[0].Y, rect[1].Y, rect[2].Y, rect[3].Y});
+  for (const IntPoint& v : rect)
+    if ((v.X != xLo && v.X != xHi) || (v.Y != yLo && v.Y != yHi)) return grown;  // not axis-aligned
+  const cInt d = toUnits(deltaMm) + 1;  // the square a corner adds, to a unit's rounding
+  Path& loop = grown.paths_[0];
+  for (const cInt cx : {xLo, xHi})
+    for (const cInt cy : {yLo, yHi}) {
+      const int sx = cx == xHi ? 1 : -1, sy = cy == yHi ? 1 : -1;
+      const UnitBox square{{std::min(cx, cx + sx * d), std::min(cy, cy + sy * d)},
+                           {std::max(cx, cx + sx * d), std::max(cy, cy + sy * d)}};
+      if (!misses(other.paths_, square)) continue;
+      // The round corner: the vertices strictly beyond both sides, one run of the loop,
+      // between the two it ends on, one on each side's line grown.
+      const size_t n = loop.size();
+      const auto beyond = [&](size_t i) {
+        return sx * (loop[i % n].X - cx) > 0 && sy * (loop[i % n].Y - cy) > 0;
+      };
+      size_t first = 0;
+      while (first < n && !(beyond(first) && !beyond(first + n - 1))) ++first;
+      if (first == n) continue;
+      size_t end = first;
+      while (beyond(end)) ++end;
+      const IntPoint a = loop[(first + n - 1) % n], b = loop[end % n];
+      IntPoint corner;
+      if (a.Y == cy && b.X == cx)
+        corner = {a.X, b.Y};
+      else if (a.X == cx && b.Y == cy)
+        corner = {b.X, a.Y};
+      else
+        continue;  // not the ends offset makes: left round
+      Path squared;
+      squared.reserve(n);
+      for (size_t k = end; k < first + n; ++k) squared.push_back(loop[k % n]);
+      squared.push_back(corner);
+      loop = std::move(squared);
+    }
+  // The ends of the sides that met a round corner now lie on straight edges: left out.
+  Path straight;
+  for (size_t i = 0, n = loop.size(); i < n; ++i) {
+    const IntPoint p = loop[(i + n - 1) % n], v = loop[i], q = loop[(i + 1) % n];
+    if (!((p.X == v.X && v.X == q.X) || (p.Y == v.Y && v.Y == q.Y))) straight.push_back(v);
+  }
+  loop = std::move(straight);
+  return grown;
 }
 
 Region2d Region2d::coarseOffset(double deltaMm, double toleranceMm) const {

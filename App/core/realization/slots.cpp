@@ -458,7 +458,7 @@ Region2d SlotCutter::grownSlots(const Region2d& slots) const {
         continue;
       }
     }
-    slot = slot.offset(neck_);
+    slot = slot.grownSquareOff(neck_, erodedShape_);
     std::lock_guard<std::mutex> lock(grownMutex_);
     if (grown_.size() >= kMaxGrown) grown_.clear();
     grown_.emplace(std::move(key), slot);

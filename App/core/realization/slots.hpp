@@ -151,7 +151,10 @@ class SlotCutter {
   // Opened pieces of the shape less `slots` beyond the shape's own, plus one (the neck
   // test); those smaller than kSliverCrumbs crumbs go to `slivers` when it is given.
   int openedPieces(const Region2d& slots, std::vector<Region2d>* slivers) const;
-  // The slots grown by neck_, slot by slot (see grown_), overlaid.
+  // The slots grown by neck_, slot by slot (see grown_), overlaid. A corner beyond the
+  // eroded shape stays square (Region2d::grownSquareOff): the difference is the same, and
+  // an open end's two corners, half a slot's, come to two points (occ/Top.brep: 52 % of
+  // 80,724 corners; its slot searches 17 % faster).
   Region2d grownSlots(const Region2d& slots) const;
 
   Region2d shape_;
