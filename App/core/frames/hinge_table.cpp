@@ -3,6 +3,8 @@
 
 #include <algorithm>
 
+#include "support/parallel.hpp"
+
 namespace sliceform {
 namespace {
 
@@ -31,14 +33,20 @@ HingeTable::HingeTable(const SliceSet& u, const SliceSet& v, const std::vector<C
                        const std::vector<Cylinder>& vCylinders, const HingeRules& rules)
     : rules_(rules) {
   const double erosion = rules.minSlotEdgeDistance + rules.slotWidth / 2;
-  for (const Cylinder& c : uCylinders) {
-    uFull_.push_back(onLines(c.section, u.frame, v));
-    uEroded_.push_back(onLines(c.section.offset(-erosion), u.frame, v));
-  }
-  for (const Cylinder& c : vCylinders) {
-    vFull_.push_back(onLines(c.section, v.frame, u));
-    vEroded_.push_back(onLines(c.section.offset(-erosion), v.frame, u));
-  }
+  // Each cylinder on its own, on every core: eroding a section is a Clipper offset of
+  // every vertex (occ/Top.brep at the file's axes: 0.24 s on one core).
+  const auto fill = [&](const std::vector<Cylinder>& cylinders, const SliceFrame& frame,
+                        const SliceSet& other, std::vector<std::vector<std::vector<Interval>>>& full,
+                        std::vector<std::vector<std::vector<Interval>>>& eroded) {
+    full.resize(cylinders.size());
+    eroded.resize(cylinders.size());
+    parallelFor(cylinders.size(), [&](size_t k) {
+      full[k] = onLines(cylinders[k].section, frame, other);
+      eroded[k] = onLines(cylinders[k].section.offset(-erosion), frame, other);
+    });
+  };
+  fill(uCylinders, u.frame, v, uFull_, uEroded_);
+  fill(vCylinders, v.frame, u, vFull_, vEroded_);
 }
 
 std::vector<Interval> HingeTable::segments(int a, int i, int b, int j) const {
