@@ -45,7 +45,7 @@ int main(int argc, char** argv) {
   // Peak memory, occ/Top.brep: 261-330 MB in six runs before, 230-259 MB in three with this
   // and the trim before the STEP file (DesignFilesWriter::start); no slower (ChineseDragon,
   // Pump_TopCover). support/free_memory.hpp says why.
-  sliceform::oneArenaPerCore();
+  sliceform::arenasForWorkingThreads();
   CLI::App app{
       "sliceform: turn a solid (STEP, IGES, BREP, STL, OBJ, OFF) into a paper sliceform.\n"
       "Lengths are millimetres."};
