@@ -77,6 +77,31 @@ TEST(Buildable, TouchingSolidsEmitWhatWasChecked) {
   expectBuildable(model, d, params);
 }
 
+// The check after patches are replaced counts again only the replaced ones' pieces: what
+// the design carries is what a whole check of its outlines finds, and pieces given as known
+// are taken as given (a patch's pieces depend on its outline alone).
+TEST(Buildable, ChecksAfterReplacingCountOnlyTheReplacedPieces) {
+  DesignParams params;
+  params.arrangement.slices = 64;
+  const Model model = modelFromShape(rodsAndPlates(), "rods and plates");
+  const Design d = runDesign(model, params);
+  std::vector<Region2d> outlines;
+  for (const PatchFace& f : d.patches) outlines.push_back(f.outline);
+  const RealizationInput in = realizationInput(d.arrangement, model.meshDeflection);
+  const Emitted whole = checkEmitted(in, outlines, params.slots);
+  ASSERT_EQ(whole.pieces.size(), outlines.size());
+  EXPECT_EQ(d.emitted.pieces, whole.pieces);
+  EXPECT_EQ(d.emitted.split, whole.split);
+  EXPECT_EQ(d.emitted.failing, whole.failing);
+  std::vector<int> known = whole.pieces;
+  known[1] = -1;
+  EXPECT_EQ(checkEmitted(in, outlines, params.slots, &known).pieces, whole.pieces);
+  known[0] = 2;  // not counted again: patch 0 reads as split
+  const Emitted told = checkEmitted(in, outlines, params.slots, &known);
+  EXPECT_EQ(told.split.front(), 0);
+  EXPECT_EQ(told.splitPatches, whole.splitPatches + 1);
+}
+
 // A bone: a shaft with two round knobs at each end, lying aslant as a scanned bone lies.
 // Where a knob's round meets the shaft, partner lines graze both patches at one height:
 // before grazes were moved off, five patches came out in pieces at 64 slices, and exact

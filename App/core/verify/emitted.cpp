@@ -33,7 +33,7 @@ bool boxesOverlap(const Box2& a, const Box2& b) {
 }  // namespace
 
 Emitted checkEmitted(const RealizationInput& input, const std::vector<Region2d>& outlines,
-                     const SlotParams& params) {
+                     const SlotParams& params, const std::vector<int>* knownPieces) {
   Emitted e;
   const int n = static_cast<int>(outlines.size());
   const auto& ps = input.patches;
@@ -50,8 +50,16 @@ Emitted checkEmitted(const RealizationInput& input, const std::vector<Region2d>&
   // one outer loop each, whatever its size: the search drops crumbs below a slot's area
   // as cut-away waste, but a crumb written to the outline is a second outer loop to the
   // independent checker and a second piece to whoever cuts it (an exact face's sliver).
-  std::vector<int> pieces(n);
-  parallelFor(static_cast<size_t>(n), [&](size_t p) {
+  std::vector<int>& pieces = e.pieces;
+  pieces.assign(n, -1);
+  std::vector<size_t> count;
+  for (int p = 0; p < n; ++p)
+    if (knownPieces && (*knownPieces)[p] >= 0)
+      pieces[p] = (*knownPieces)[p];
+    else
+      count.push_back(static_cast<size_t>(p));
+  parallelFor(count.size(), [&](size_t i) {
+    const size_t p = count[i];
     pieces[p] = std::max(slottedPieces(ps[p].shape, outlines[p], params, input.tolerance),
                          static_cast<int>(outlines[p].components().size()));
   });

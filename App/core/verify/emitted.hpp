@@ -33,12 +33,15 @@ struct Emitted {
   std::pair<int, int> closest{-1, -1};
   double minPatchSpacing = 0;
   std::vector<int> failing;  // patches in a split, a collision or an interlock, sorted
+  std::vector<int> pieces;   // per patch: its pieces by the neck test, or its outer loops
 };
 
 // `outlines`: per patch, in its family frame's 2D coordinates. `spacing` is the spacing
-// rule in force (Arrangement::minSpacing).
+// rule in force (Arrangement::minSpacing). `knownPieces`, when given: Emitted::pieces of an
+// earlier check of the same patches, -1 where the outline has changed since; the others
+// are not counted again (a patch's pieces depend on its outline alone).
 Emitted checkEmitted(const RealizationInput& input, const std::vector<Region2d>& outlines,
-                     const SlotParams& params);
+                     const SlotParams& params, const std::vector<int>* knownPieces = nullptr);
 
 // Whether an emitted pair of stacked patches breaks the spacing rule.
 bool tooClose(const Emitted& e, double spacing);
