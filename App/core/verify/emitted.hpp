@@ -33,7 +33,7 @@ struct Emitted {
   std::pair<int, int> closest{-1, -1};
   double minPatchSpacing = 0;
   std::vector<int> failing;  // patches in a split, a collision or an interlock, sorted
-  std::vector<int> pieces;   // per patch: its pieces by the neck test, or its outer loops
+  std::vector<int> pieces;   // per patch: its pieces by the neck test or its outer loops, the more
 };
 
 // `outlines`: per patch, in its family frame's 2D coordinates. `spacing` is the spacing
