@@ -42,11 +42,14 @@ int exitCode(sliceform::ErrorKind kind) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  // Peak memory, occ/Top.brep: 261-330 MB in six runs with glibc's arenas, 230-259 MB in
-  // three with one a core and the trim before the STEP file (DesignFilesWriter::start), 240 MB
-  // with two a core (stop 44), which stops the STEP writer waiting on the pool's arenas.
-  // support/free_memory.hpp says why.
+#if !SLICEFORM_MIMALLOC
+  // With the C library's malloc (mimalloc not installed when this was built): peak memory,
+  // occ/Top.brep: 261-330 MB in six runs with glibc's arenas, 230-259 MB in three with one a
+  // core and the trim before the STEP file (DesignFilesWriter::start), 240 MB with two a core
+  // (stop 44), which stops the STEP writer waiting on the pool's arenas.
+  // support/free_memory.hpp says why. mimalloc keeps a heap a thread, and needs none of it.
   sliceform::arenasForWorkingThreads();
+#endif
   CLI::App app{
       "sliceform: turn a solid (STEP, IGES, BREP, STL, OBJ, OFF) into a paper sliceform.\n"
       "Lengths are millimetres."};

@@ -32,7 +32,8 @@ inline void releaseFreeMemory() {
 #endif
 }
 
-// Two arenas a core, for a process that owns its allocator (the CLI, not FreeCAD): one for
+// Two arenas a core, for a process that owns its allocator (the CLI built without mimalloc,
+// which replaces glibc's malloc there and needs none of this; not FreeCAD): one for
 // each thread that allocates while others do, no more, so that a thread started late
 // shares the memory earlier threads freed. The threads: OCCT's pool (parallelFor's, one a
 // core with the calling thread), OCCT's TBB threads (BRepMesh, while the model is read),
