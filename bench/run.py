@@ -225,7 +225,12 @@ def main():
             meshes.write_off(a.models[0], *meshes.icosphere(3))
     elif not a.models:
         a.models, refused = default_models()
-    git = lambda *c: subprocess.run(["git", "-C", ROOT] + list(c), capture_output=True, text=True).stdout.strip()
+    def git(*c):  # "" where git is not installed (the Debian 13 root the suite keeps)
+        try:
+            return subprocess.run(["git", "-C", ROOT] + list(c), capture_output=True, text=True).stdout.strip()
+        except FileNotFoundError:
+            return ""
+
     result = {"machine": machine(), "command": " ".join([sys.executable] + sys.argv),
               "commit": git("rev-parse", "--short", "HEAD"), "tree_dirty": bool(git("status", "--porcelain", "App")),
               "cli_built": time.strftime("%Y-%m-%d %H:%M:%S", time.localtime(os.stat(a.cli).st_mtime)),
