@@ -44,15 +44,24 @@ def median(xs):
 
 
 def timed(cmd, cwd):
-    """Runs cmd under /usr/bin/time -v: exit code, wall s (measured here), peak RSS MB."""
-    t0 = time.time()
-    p = subprocess.run(["/usr/bin/time", "-v"] + cmd, cwd=cwd, capture_output=True, text=True)
-    wall = time.time() - t0
-    rss = re.search(r"Maximum resident set size \(kbytes\): (\d+)", p.stderr)
-    # The program's own message, else what /usr/bin/time says (a signal, an exit status).
-    err = [l for l in p.stderr.splitlines() if l.startswith(("sliceform", "Command terminated", "Command exited"))]
-    return {"rc": p.returncode, "t0": t0, "wall_s": wall, "rss_mb": int(rss.group(1)) / 1024 if rss else None,
-            "stdout": p.stdout, "error": err[0] if err else None}
+    """Runs cmd: exit code, wall s and peak RSS MB, both measured here (the child's rusage
+    from wait4: no /usr/bin/time needed, which the Debian 13 root lacks)."""
+    with tempfile.TemporaryFile("w+") as out, tempfile.TemporaryFile("w+") as err:
+        t0 = time.time()
+        p = subprocess.Popen(cmd, cwd=cwd, stdout=out, stderr=err, text=True)
+        _, status, usage = os.wait4(p.pid, 0)
+        wall = time.time() - t0
+        p.returncode = os.waitstatus_to_exitcode(status)
+        out.seek(0), err.seek(0)
+        stdout, stderr = out.read(), err.read()
+    # The program's own message, else how it ended (a signal, an exit status).
+    lines = [l for l in stderr.splitlines() if l.startswith("sliceform")]
+    if not lines and p.returncode < 0:
+        lines = ["Command terminated by signal %d" % -p.returncode]
+    elif not lines and p.returncode > 0:
+        lines = ["Command exited with non-zero status %d" % p.returncode]
+    return {"rc": p.returncode, "t0": t0, "wall_s": wall, "rss_mb": usage.ru_maxrss / 1024,
+            "stdout": stdout, "error": lines[0] if lines else None}
 
 
 def design_once(cli, model, n, size, tmp):
