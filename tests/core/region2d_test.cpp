@@ -207,6 +207,26 @@ TEST(Region2d, SlotsGrownSquareOffThePaperCutItAsGrownRound) {
   EXPECT_EQ(roundEnd.grownSquareOff(neck, paper).paths(), roundEnd.offset(neck).paths());
 }
 
+// The neck test's slots (SlotCutter::kNeckArcTolerance): round corners as chords of the
+// true arcs at a 10 µm tolerance. The paper less the slot is still the paper less the slot
+// grown round at that tolerance; no chord lies more than 2.25 tolerances inside its arc
+// (Clipper rounds a corner's steps to whole ones, so its last chord may be half a step
+// longer); and a corner takes fewer vertices than at offset's 1 µm.
+TEST(Region2d, SlotsGrownWithCoarseCornersLieWithinTheirTolerance) {
+  const double neck = 0.17, tolerance = 0.01;
+  const Region2d paper = Region2d::fromLoops({rect(0, 0, 30, 20)}).offset(-neck);
+  for (const double x : {5.0, 15.0, 29.9}) {
+    const Region2d slot = Region2d::fromLoops({rect(x - 0.25, 8, x + 0.25, 25)});
+    const Region2d grown = slot.grownSquareOff(neck, paper, tolerance);
+    EXPECT_EQ(paper.subtract(grown).paths(), paper.subtract(slot.offset(neck, tolerance)).paths());
+    // Everything within neck - 2.25 tolerances of the slot is covered; on the paper,
+    // nothing beyond the neck (the 1 µm offset's own chords cut 1 µm inside it).
+    EXPECT_TRUE(slot.offset(neck - 2.25 * tolerance).subtract(grown).empty()) << x;
+    EXPECT_LT(paper.intersect(grown).subtract(slot.offset(neck + 0.001)).area(), 1e-9) << x;
+    EXPECT_LT(slot.offset(neck, tolerance).paths().front().size(), slot.offset(neck).paths().front().size());
+  }
+}
+
 TEST(Region2d, IntervalsOnVerticalLineThroughHole) {
   // Square [0,10]² with a hole [3,7] x [4,6.5].
   const Region2d r = Region2d::fromLoops({rect(0, 0, 10, 10), rect(3, 4, 7, 6.5)});

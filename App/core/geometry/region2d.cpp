@@ -354,18 +354,17 @@ Region2d Region2d::subtract(const Region2d& other) const {
   return r;
 }
 
-Region2d Region2d::offset(double deltaMm) const {
+Region2d Region2d::offset(double deltaMm, double arcToleranceMm) const {
   ClipperLib::ClipperOffset offsetter;
-  // Arc tolerance 1 µm: round corners stay round at any print size.
-  offsetter.ArcTolerance = 0.001 * kUnitsPerMm;
+  offsetter.ArcTolerance = arcToleranceMm * kUnitsPerMm;
   offsetter.AddPaths(paths_, ClipperLib::jtRound, ClipperLib::etClosedPolygon);
   Region2d r;
   offsetter.Execute(r.paths_, deltaMm * kUnitsPerMm);
   return r;
 }
 
-Region2d Region2d::grownSquareOff(double deltaMm, const Region2d& other) const {
-  Region2d grown = offset(deltaMm);
+Region2d Region2d::grownSquareOff(double deltaMm, const Region2d& other, double arcToleranceMm) const {
+  Region2d grown = offset(deltaMm, arcToleranceMm);
   if (!(deltaMm > 0) || paths_.size() != 1 || paths_[0].size() != 4 || grown.paths_.size() != 1) return grown;
   const Path& rect = paths_[0];
   const auto [xLo, xHi] = std::minmax({rect[0].X, rect[1].X, rect[2].X, rect[3].X});
@@ -416,12 +415,7 @@ Region2d Region2d::grownSquareOff(double deltaMm, const Region2d& other) const {
 }
 
 Region2d Region2d::coarseOffset(double deltaMm, double toleranceMm) const {
-  ClipperLib::ClipperOffset offsetter;
-  offsetter.ArcTolerance = toleranceMm * kUnitsPerMm;
-  offsetter.AddPaths(paths_, ClipperLib::jtRound, ClipperLib::etClosedPolygon);
-  Paths out;
-  offsetter.Execute(out, deltaMm * kUnitsPerMm);
-  return fromPaths(out, FillRule::NonZero);
+  return fromPaths(offset(deltaMm, toleranceMm).paths_, FillRule::NonZero);
 }
 
 Region2d Region2d::simplified(double toleranceMm) const {

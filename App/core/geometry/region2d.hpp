@@ -76,13 +76,17 @@ class Region2d {
   Region2d unite(const Region2d& other) const;
   Region2d intersect(const Region2d& other) const;
   Region2d subtract(const Region2d& other) const;
-  // Grows (delta > 0) or erodes (delta < 0) by |delta| mm, with round corners.
-  Region2d offset(double deltaMm) const;
-  // offset(deltaMm) of a region of one axis-aligned rectangle (a slot), but with square
-  // corners wherever the square a corner then adds misses `other`: the two differ only
-  // outside `other`, so `other` less either is the same region, and a square corner is one
-  // vertex where a round one is a dozen. Any other region is offset as it is.
-  Region2d grownSquareOff(double deltaMm, const Region2d& other) const;
+  // Grows (delta > 0) or erodes (delta < 0) by |delta| mm, with round corners: chords whose
+  // ends lie on the true arcs, within `arcToleranceMm` of them (1 µm: round at any print
+  // size).
+  static constexpr double kArcToleranceMm = 0.001;
+  Region2d offset(double deltaMm, double arcToleranceMm = kArcToleranceMm) const;
+  // offset(deltaMm, arcToleranceMm) of a region of one axis-aligned rectangle (a slot), but
+  // with square corners wherever the square a corner then adds misses `other`: the two
+  // differ only outside `other`, so `other` less either is the same region, and a square
+  // corner is one vertex where a round one is a dozen. Any other region is offset as it is.
+  Region2d grownSquareOff(double deltaMm, const Region2d& other,
+                          double arcToleranceMm = kArcToleranceMm) const;
   // offset with round corners cut as chords up to `toleranceMm` inside the true arcs (far
   // fewer vertices than offset's 1 µm), then normalised as fromLoops normalises.
   Region2d coarseOffset(double deltaMm, double toleranceMm) const;
