@@ -173,12 +173,14 @@ TEST(Region2d, GrownSquareHasRoundCorners) {
 }
 
 // A slot grown with square corners where they miss the paper: the paper less it is the
-// paper less the slot grown round, to the unit, and a corner beyond the paper is one vertex.
+// paper less the slot grown with every corner round, to the unit, and a corner beyond the
+// paper is one vertex.
 TEST(Region2d, SlotsGrownSquareOffThePaperCutItAsGrownRound) {
   const double neck = 0.17;
   const Region2d paper = Region2d::fromLoops({rect(0, 0, 30, 20), rect(8, 6, 14, 12)})
                              .subtract(Region2d::fromLoops({{{18, 21}, {20, 10}, {22, 21}}}))
                              .offset(-neck);
+  const Region2d everywhere = Region2d::fromLoops({rect(-100, -100, 100, 100)});  // no corner squared
   // Alone, far from the paper, all four corners square: the rectangle grown by the neck.
   const Region2d far = Region2d::fromLoops({rect(40, 0, 40.5, 5)});
   const Region2d farGrown = far.grownSquareOff(neck, paper);
@@ -191,7 +193,7 @@ TEST(Region2d, SlotsGrownSquareOffThePaperCutItAsGrownRound) {
   for (int i = 0; i < 300; ++i) {
     const double x = at(random), y = at(random) * 0.7, w = 0.5;
     const Region2d slot = Region2d::fromLoops({rect(x - w / 2, y, x + w / 2, y + length(random))});
-    const Region2d grown = slot.grownSquareOff(neck, paper), roundly = slot.offset(neck);
+    const Region2d grown = slot.grownSquareOff(neck, paper), roundly = slot.grownSquareOff(neck, everywhere);
     const Region2d a = paper.subtract(grown), b = paper.subtract(roundly);
     EXPECT_EQ(a.paths(), b.paths()) << "slot at " << x << ", " << y;
     EXPECT_TRUE(a.subtract(b).empty() && b.subtract(a).empty());
@@ -202,28 +204,31 @@ TEST(Region2d, SlotsGrownSquareOffThePaperCutItAsGrownRound) {
   }
   EXPECT_GT(squared, 100);  // slots reaching out of the paper, or lying beside it
   EXPECT_GT(round, 20);     // slots wholly inside it
-  // Not one rectangle (a slot with a round end): grown round.
+  // Not one rectangle (a slot with a round end): grown as offset grows it.
   const Region2d roundEnd = Region2d::fromLoops({{{40, 0}, {41, 0}, {41, 3}, {40.5, 3.5}, {40, 3}}});
   EXPECT_EQ(roundEnd.grownSquareOff(neck, paper).paths(), roundEnd.offset(neck).paths());
 }
 
-// The neck test's slots (SlotCutter::kNeckArcTolerance): round corners as chords of the
-// true arcs at a 10 µm tolerance. The paper less the slot is still the paper less the slot
-// grown round at that tolerance; no chord lies more than 2.25 tolerances inside its arc
-// (Clipper rounds a corner's steps to whole ones, so its last chord may be half a step
-// longer); and a corner takes fewer vertices than at offset's 1 µm.
-TEST(Region2d, SlotsGrownWithCoarseCornersLieWithinTheirTolerance) {
-  const double neck = 0.17, tolerance = 0.01;
-  const Region2d paper = Region2d::fromLoops({rect(0, 0, 30, 20)}).offset(-neck);
-  for (const double x : {5.0, 15.0, 29.9}) {
-    const Region2d slot = Region2d::fromLoops({rect(x - 0.25, 8, x + 0.25, 25)});
-    const Region2d grown = slot.grownSquareOff(neck, paper, tolerance);
-    EXPECT_EQ(paper.subtract(grown).paths(), paper.subtract(slot.offset(neck, tolerance)).paths());
-    // Everything within neck - 2.25 tolerances of the slot is covered; on the paper,
-    // nothing beyond the neck (the 1 µm offset's own chords cut 1 µm inside it).
-    EXPECT_TRUE(slot.offset(neck - 2.25 * tolerance).subtract(grown).empty()) << x;
-    EXPECT_LT(paper.intersect(grown).subtract(slot.offset(neck + 0.001)).area(), 1e-9) << x;
-    EXPECT_LT(slot.offset(neck, tolerance).paths().front().size(), slot.offset(neck).paths().front().size());
+// A slot's round corners (SlotCutter::kNeckArcTolerance: 10 µm) are chords tangent to the
+// true arcs: the grown slot covers every point within the neck of the slot, and reaches no
+// further than the tolerance beyond it; a corner takes fewer vertices than at 1 µm.
+TEST(Region2d, SlotsGrownRoundCoverTheNeckWithinTheirTolerance) {
+  const Region2d everywhere = Region2d::fromLoops({rect(-100, -100, 100, 100)});
+  const double x0 = 5, y0 = 8, x1 = 5.5, y1 = 12;
+  const Region2d slot = Region2d::fromLoops({rect(x0, y0, x1, y1)});
+  for (const double neck : {0.11, 0.17, 0.4}) {
+    for (const double tolerance : {0.001, 0.01}) {
+      const Region2d grown = slot.grownSquareOff(neck, everywhere, tolerance);
+      for (int d = 0; d < 360; ++d) {
+        const double t = d * M_PI / 180, cx = std::cos(t) > 0 ? x1 : x0, cy = std::sin(t) > 0 ? y1 : y0;
+        EXPECT_TRUE(grown.contains({cx + neck * std::cos(t), cy + neck * std::sin(t)})) << neck << " " << d;
+      }
+      // offset's chords (1 µm) cut up to 2.25 µm inside its arcs (its last step may be half
+      // a step longer): 2.5 µm more.
+      EXPECT_TRUE(grown.subtract(slot.offset(neck + tolerance + 0.0025)).empty()) << neck << " " << tolerance;
+    }
+    EXPECT_LT(slot.grownSquareOff(neck, everywhere, 0.01).paths().front().size(),
+              slot.grownSquareOff(neck, everywhere, 0.001).paths().front().size());
   }
 }
 

@@ -179,6 +179,25 @@ Paths sweptBands(const Paths& paths, cInt w, cInt h, const UnitBox& near) {
   return bands;
 }
 
+// The quarter of a circle about `centre` from a to b (each on one side's line, grown by r
+// units) as chords tangent to the true arc: their corners on a circle 1 / cos(half a
+// segment) larger, at most `tolerance` units beyond the arc, each a unit further out for
+// rounding but not beyond the sides' lines (the first and last corners lie on them).
+void addTangentCorner(IntPoint centre, IntPoint a, IntPoint b, cInt r, double tolerance, Path& out) {
+  const cInt side = std::abs(a.X - centre.X) + std::abs(a.Y - centre.Y);
+  int segments = 1;
+  while (r * (1 / std::cos(M_PI / 4 / segments) - 1) > tolerance) ++segments;
+  const double from = std::atan2(static_cast<double>(a.Y - centre.Y), static_cast<double>(a.X - centre.X));
+  const double turn = std::remainder(  // the quarter between them, either way
+      std::atan2(static_cast<double>(b.Y - centre.Y), static_cast<double>(b.X - centre.X)) - from, 2 * M_PI);
+  const double reach = r / std::cos(std::abs(turn) / segments / 2) + 1;
+  for (int k = 0; k < segments; ++k) {
+    const double t = from + turn * (k + 0.5) / segments;
+    out.push_back({centre.X + std::clamp(static_cast<cInt>(std::round(reach * std::cos(t))), -side, side),
+                   centre.Y + std::clamp(static_cast<cInt>(std::round(reach * std::sin(t))), -side, side)});
+  }
+}
+
 }  // namespace
 
 ClipperLib::cInt Region2d::toUnits(double mm) {
@@ -378,9 +397,9 @@ Region2d Region2d::grownSquareOff(double deltaMm, const Region2d& other, double 
       const int sx = cx == xHi ? 1 : -1, sy = cy == yHi ? 1 : -1;
       const UnitBox square{{std::min(cx, cx + sx * d), std::min(cy, cy + sy * d)},
                            {std::max(cx, cx + sx * d), std::max(cy, cy + sy * d)}};
-      if (!misses(other.paths_, square)) continue;
-      // The round corner: the vertices strictly beyond both sides, one run of the loop,
-      // between the two it ends on, one on each side's line grown.
+      const bool squareOff = misses(other.paths_, square);
+      // The corner offset made: the vertices strictly beyond both sides, one run of the
+      // loop, between the two it ends on, one on each side's line grown.
       const size_t n = loop.size();
       const auto beyond = [&](size_t i) {
         return sx * (loop[i % n].X - cx) > 0 && sy * (loop[i % n].Y - cy) > 0;
@@ -397,12 +416,15 @@ Region2d Region2d::grownSquareOff(double deltaMm, const Region2d& other, double 
       else if (a.X == cx && b.Y == cy)
         corner = {b.X, a.Y};
       else
-        continue;  // not the ends offset makes: left round
-      Path squared;
-      squared.reserve(n);
-      for (size_t k = end; k < first + n; ++k) squared.push_back(loop[k % n]);
-      squared.push_back(corner);
-      loop = std::move(squared);
+        continue;  // not the ends offset makes: left as offset made it
+      Path cornered;
+      cornered.reserve(n);
+      for (size_t k = end; k < first + n; ++k) cornered.push_back(loop[k % n]);
+      if (squareOff)
+        cornered.push_back(corner);
+      else
+        addTangentCorner({cx, cy}, a, b, toUnits(deltaMm), arcToleranceMm * kUnitsPerMm, cornered);
+      loop = std::move(cornered);
     }
   // The ends of the sides that met a round corner now lie on straight edges: left out.
   Path straight;

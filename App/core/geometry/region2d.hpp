@@ -81,10 +81,12 @@ class Region2d {
   // size).
   static constexpr double kArcToleranceMm = 0.001;
   Region2d offset(double deltaMm, double arcToleranceMm = kArcToleranceMm) const;
-  // offset(deltaMm, arcToleranceMm) of a region of one axis-aligned rectangle (a slot), but
-  // with square corners wherever the square a corner then adds misses `other`: the two
-  // differ only outside `other`, so `other` less either is the same region, and a square
-  // corner is one vertex where a round one is a dozen. Any other region is offset as it is.
+  // A region of one axis-aligned rectangle (a slot) grown by deltaMm: square corners
+  // wherever the square a corner then adds misses `other` (the two differ only outside
+  // `other`, so `other` less either is the same region, and a square corner is one vertex
+  // where a round one is several); round ones elsewhere, as chords tangent to the true arc
+  // whose corners lie at most `arcToleranceMm` (and a unit) beyond it, so the grown slot
+  // covers every point within deltaMm of the slot. Any other region is offset as it is.
   Region2d grownSquareOff(double deltaMm, const Region2d& other,
                           double arcToleranceMm = kArcToleranceMm) const;
   // offset with round corners cut as chords up to `toleranceMm` inside the true arcs (far

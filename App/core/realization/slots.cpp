@@ -441,7 +441,7 @@ int SlotCutter::openedPieces(const Region2d& slots, std::vector<Region2d>* slive
 
 Region2d SlotCutter::grownSlots(const Region2d& slots) const {
   // Slots enclose no paper of their own; a hole among them would not grow alone.
-  if (slots.holeCount() > 0) return slots.offset(neck_, kNeckArcTolerance);
+  if (slots.holeCount() > 0) return slots.offset(neck_);
   // Bounds the slots kept (about 1 kB each): a repair's searches move patches, and with
   // them their slots. Top.brep's busiest patch kept 350.
   constexpr size_t kMaxGrown = 1024;

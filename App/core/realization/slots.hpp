@@ -145,13 +145,13 @@ class SlotCutter {
   // Opened pieces smaller than this many crumbs, once slots are cut, are slivers (cut()).
   static constexpr double kSliverCrumbs = 4;
 
-  // The arc tolerance of the grown slots' round corners: 10 µm, not Region2d::offset's 1 µm.
-  // A round corner is then 3 vertices, not 8 (a 0.15 mm neck), a grown slot about 8, not 18,
-  // and the Boolean of every slot choice the search tries that much smaller (occ/Top.brep:
-  // its slot search 2.06 -> 1.40 s, MODERN_Cooker_1 1.21 -> 0.93 s). The chords' ends lie on the true arcs and no
-  // chord more than 23 µm inside (Clipper rounds a corner's steps to whole ones): a bridge
-  // beside a slot's root corner may pass that much narrower than two necks, a fifth of a
-  // laser's kerf. Every design (occt-misc, the meshes) is the same as at 1 µm.
+  // The grown slots' round corners (Region2d::grownSquareOff): chords tangent to the true
+  // arcs, their corners at most 10 µm beyond them. So the grown slot covers every point
+  // within a neck of the slot, and no bridge narrower than two necks passes (offset's 1 µm
+  // chords, used before, cut up to 2.3 µm inside the arcs). A round corner is then 3 vertices,
+  // not 8 (a 0.17 mm neck), a grown slot about 8, not 18, and the Boolean of every slot
+  // choice the search tries that much smaller (occ/Top.brep: its slot search 2.06 -> 1.42 s,
+  // MODERN_Cooker_1 1.21 -> 1.05 s). Every design (occt-misc, the meshes) is the same.
   static constexpr double kNeckArcTolerance = 0.01;  // mm
 
  private:
