@@ -150,8 +150,9 @@ class SlotCutter {
   // within a neck of the slot, and no bridge narrower than two necks passes (offset's 1 µm
   // chords, used before, cut up to 2.3 µm inside the arcs). A round corner is then 3 vertices,
   // not 8 (a 0.17 mm neck), a grown slot about 8, not 18, and the Boolean of every slot
-  // choice the search tries that much smaller (occ/Top.brep: its slot search 2.06 -> 1.42 s,
-  // MODERN_Cooker_1 1.21 -> 1.05 s). Every design (occt-misc, the meshes) is the same.
+  // choice the search tries that much smaller (the realization stage, median of 3:
+  // occ/Top.brep 1.76 -> 1.32 s, MODERN_Cooker_1 1.16 -> 0.89 s). Every design (occt-misc,
+  // the meshes) is the same.
   static constexpr double kNeckArcTolerance = 0.01;  // mm
 
  private:
