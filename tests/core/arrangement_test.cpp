@@ -194,5 +194,33 @@ TEST(Gca, LooserTauMeansFewerCylinders) {
   EXPECT_LT(previous, 10u);
 }
 
+TEST(Gca, NoPartitionFitsTheLeastErrorOneOfRunsUpToTwiceTheShortest) {
+  // A cone with no budget: no run of 3 or more fits, so runs of 3 to 5 slices are measured
+  // (each row's unions going on from where the first measure stopped) and the partition
+  // with the least error stands. Checked against every partition into such runs.
+  std::vector<Region2d> patches;
+  for (int k = 1; k <= 13; ++k) patches.push_back(rect(0, 0, k, 2 * k));
+  const int n = static_cast<int>(patches.size()), minRun = 3;
+  const auto groups = partitionPatches(patches, 1.0, 0.0, minRun);
+  double error = 0;
+  int next = 0;
+  for (const auto& [i, j] : groups) {
+    EXPECT_EQ(i, next);
+    EXPECT_GE(j - i + 1, minRun);
+    EXPECT_LE(j - i + 1, 2 * minRun - 1);
+    error += cylinderError(patches, i, j, 1.0);
+    next = j + 1;
+  }
+  EXPECT_EQ(next, n);
+  // least[i]: the least error of patches i.. in runs of 3 to 5.
+  std::vector<double> least(n + 1, HUGE_VAL);
+  least[n] = 0;
+  for (int i = n - 1; i >= 0; --i)
+    for (int len = minRun; len <= 2 * minRun - 1 && i + len <= n; ++len)
+      least[i] = std::min(least[i], cylinderError(patches, i, i + len - 1, 1.0) + least[i + len]);
+  EXPECT_NEAR(error, least[0], 1e-9);
+  EXPECT_GT(error, 0);
+}
+
 }  // namespace
 }  // namespace sliceform
