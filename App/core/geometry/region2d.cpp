@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "support/error.hpp"
+#include "support/parallel.hpp"
 
 namespace sliceform {
 namespace {
@@ -14,6 +15,9 @@ using ClipperLib::Clipper;
 using ClipperLib::IntPoint;
 using ClipperLib::Path;
 using ClipperLib::Paths;
+
+// uniteAll unites a level's pairs on every core from this many pairs on.
+constexpr size_t kParallelPairs = 8;
 
 ClipperLib::PolyFillType toClipper(FillRule rule) {
   return rule == FillRule::EvenOdd ? ClipperLib::pftEvenOdd : ClipperLib::pftNonZero;
@@ -260,18 +264,25 @@ Region2d Region2d::withoutHoles() const {
 Region2d Region2d::uniteAll(const std::vector<Region2d>& regions) {
   // Pairwise, as a balanced tree: one sweep over every outline at once pays for every
   // crossing of every pair (hundreds of stacked, similar slices: quadratic), while a union
-  // of two similar shapes is about one shape again.
+  // of two similar shapes is about one shape again. A level's pairs on every core where
+  // there are enough of them to pay for it (a model's silhouette: 128 slices), each united
+  // as on one core: the same region.
   if (regions.empty()) return {};
   std::vector<Region2d> level = regions;
   while (level.size() > 1) {
-    std::vector<Region2d> next;
-    next.reserve((level.size() + 1) / 2);
-    for (size_t i = 0; i + 1 < level.size(); i += 2) {
-      Paths both = level[i].paths_;
-      both.insert(both.end(), level[i + 1].paths_.begin(), level[i + 1].paths_.end());
-      next.push_back(fromPaths(both, FillRule::NonZero));
+    std::vector<Region2d> next((level.size() + 1) / 2);
+    const auto pair = [&](size_t k) {
+      Paths both = level[2 * k].paths_;
+      both.insert(both.end(), level[2 * k + 1].paths_.begin(), level[2 * k + 1].paths_.end());
+      next[k] = fromPaths(both, FillRule::NonZero);
+    };
+    const size_t pairs = level.size() / 2;
+    if (pairs >= kParallelPairs) {
+      parallelFor(pairs, pair);
+    } else {
+      for (size_t k = 0; k < pairs; ++k) pair(k);
     }
-    if (level.size() % 2) next.push_back(level.back());
+    if (level.size() % 2) next.back() = std::move(level.back());
     level = std::move(next);
   }
   // A single region is normalised too (its own overlaps united), as before.
