@@ -146,6 +146,35 @@ TEST(Region2d, BooleanAreas) {
   EXPECT_NEAR(Region2d::uniteAll({a, b, Region2d::fromLoops({rect(20, 0, 21, 1)})}).area(), 176.0, kTiny);
 }
 
+TEST(Region2d, UniteAllOfManyOnEveryCoreIsTheUnion) {
+  // 37 squares in a staircase (18 pairs at the first level: united on every core), and
+  // every fourth apart from the rest: the union's area is known, its pieces are counted,
+  // and two runs give the same loops to the unit.
+  std::vector<Region2d> squares;
+  double area = 0;
+  for (int k = 0; k < 37; ++k) {
+    const double x = k + (k / 4) * 20.0;  // a gap of 20 after every four
+    squares.push_back(Region2d::fromLoops({rect(x, k, x + 2, k + 2)}));
+  }
+  // Each run of four overlapping 2 x 2 squares, one unit apart: 4 x 4 less the overlaps.
+  for (int run = 0; run < 37; run += 4) {
+    const int n = std::min(4, 37 - run);
+    area += 4.0 * n - (n - 1) * 1.0;
+  }
+  const Region2d all = Region2d::uniteAll(squares);
+  EXPECT_NEAR(all.area(), area, kTiny);
+  EXPECT_EQ(all.components().size(), 10u);
+  const std::vector<Loop> again = Region2d::uniteAll(squares).loops();
+  ASSERT_EQ(all.loops().size(), again.size());
+  for (size_t k = 0; k < again.size(); ++k) {
+    ASSERT_EQ(all.loops()[k].size(), again[k].size());
+    for (size_t i = 0; i < again[k].size(); ++i) {
+      EXPECT_EQ(all.loops()[k][i].x, again[k][i].x);
+      EXPECT_EQ(all.loops()[k][i].y, again[k][i].y);
+    }
+  }
+}
+
 TEST(Region2d, ErodedSquareKeepsSharpCorners) {
   const double a = 10, d = 1.5;
   const Region2d r = Region2d::fromLoops({rect(0, 0, a, a)}).offset(-d);
