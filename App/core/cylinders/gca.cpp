@@ -47,25 +47,26 @@ std::vector<std::pair<int, int>> partitionPatches(const std::vector<Region2d>& p
   // `measured` slices long: longer runs can never be part of an answer (infinite error).
   constexpr double kInf = std::numeric_limits<double>::infinity();
   std::vector<std::vector<double>> err(n, std::vector<double>(n, kInf));
-  // Each row's union so far, its areas' sum and its last run measured: measuring longer
+  // Each row's union so far, its areas' sum and the last patch in it: measuring longer
   // runs goes on from there, with the same unions in the same order and so the same
   // errors, not from the row's first patch again (femur.off: that was half the stage).
-  std::vector<Region2d> rowUnion(n);
-  std::vector<double> rowSum(n, 0);
-  std::vector<int> rowLast(n);
-  for (int i = 0; i < n; ++i) rowLast[i] = i - 1;
+  struct Row {
+    Region2d united;
+    double sumArea = 0;
+    int last = -1;  // none yet
+  };
+  std::vector<Row> rows(n);
   const auto measure = [&](int measured) {
     // Rows are independent: one per core, each writing only its own row.
-    parallelFor(static_cast<size_t>(n), [&](size_t row) {
-      const int i = static_cast<int>(row);
-      Region2d& u = rowUnion[i];
-      int& last = rowLast[i];
-      if (last >= i && err[i][last] > budget && last - i + 1 >= measured) return;
-      for (int j = last + 1; j < n; ++j) {
-        u = j == i ? coarse[i] : u.unite(coarse[j]);
-        rowSum[i] += area[j];
-        err[i][j] = ds * ((j - i + 1) * u.area() - rowSum[i]);
-        last = j;
+    parallelFor(static_cast<size_t>(n), [&](size_t index) {
+      const int i = static_cast<int>(index);
+      Row& row = rows[i];
+      if (row.last >= i && err[i][row.last] > budget && row.last - i + 1 >= measured) return;
+      for (int j = std::max(row.last + 1, i); j < n; ++j) {
+        row.united = j == i ? coarse[i] : row.united.unite(coarse[j]);
+        row.sumArea += area[j];
+        err[i][j] = ds * ((j - i + 1) * row.united.area() - row.sumArea);
+        row.last = j;
         if (err[i][j] > budget && j - i + 1 >= measured) break;
       }
     });
