@@ -222,5 +222,62 @@ TEST(Gca, NoPartitionFitsTheLeastErrorOneOfRunsUpToTwiceTheShortest) {
   EXPECT_GT(error, 0);
 }
 
+TEST(Gca, LongEdgesGiveTheAnswerOfEveryRunMeasured) {
+  // 40 sections growing slowly, whose answers take runs longer than the 12 slices measured
+  // first, then 56 wavering ones. Each answer must be the one of the DP over every run:
+  // as many groups, and the same least error.
+  std::vector<Region2d> patches;
+  for (int k = 0; k < 40; ++k) patches.push_back(rect(0, 0, 20 + 0.05 * k, 15));
+  for (int k = 40; k < 96; ++k)
+    patches.push_back(rect(0, 0, std::round(2000 + 800 * std::sin(k / 7.0) + 60 * std::sin(k * 1.3)) / 100,
+                           std::round(1500 + 600 * std::cos(k / 9.0) + 40 * std::sin(k * 2.1)) / 100));
+  const int n = static_cast<int>(patches.size());
+  double volume = 0;
+  for (const Region2d& p : patches) volume += p.area();
+  for (const auto& [minRun, tau] :
+       std::vector<std::pair<int, double>>{{1, 0.03}, {1, 0.1}, {1, 0.2}, {3, 0.1}, {3, 0.2}}) {
+    SCOPED_TRACE(testing::Message() << "minRun " << minRun << ", tauA " << tau);
+    const double budget = tau * volume;
+    // Every run within the budget, its union grown one patch at a time.
+    std::vector<std::vector<double>> err(n, std::vector<double>(n, HUGE_VAL));
+    for (int i = 0; i < n; ++i) {
+      Region2d united = patches[i];
+      double areas = 0;
+      for (int j = i; j < n; ++j) {
+        united = j == i ? united : united.unite(patches[j]);
+        areas += patches[j].area();
+        const double e = (j - i + 1) * united.area() - areas;
+        if (e > budget) break;
+        err[i][j] = e;
+      }
+    }
+    // The fewest groups that fit, and their least error.
+    std::vector<double> least(n + 1, HUGE_VAL), next(n + 1);
+    least[n] = 0;
+    int groups = 0;
+    while (least[0] > budget && ++groups * minRun <= n) {
+      std::fill(next.begin(), next.end(), HUGE_VAL);
+      for (int i = 0; i < n; ++i)
+        for (int k = i + minRun - 1; k < n; ++k) next[i] = std::min(next[i], err[i][k] + least[k + 1]);
+      next[n] = HUGE_VAL;
+      least.swap(next);
+    }
+    ASSERT_LE(least[0], budget);
+    const auto answer = partitionPatches(patches, 1.0, tau, minRun);
+    EXPECT_EQ(static_cast<int>(answer.size()), groups);
+    double total = 0;
+    int from = 0;
+    for (const auto& [i, j] : answer) {
+      EXPECT_EQ(i, from);
+      EXPECT_GE(j - i + 1, minRun);
+      ASSERT_LT(err[i][j], HUGE_VAL);
+      total += err[i][j];
+      from = j + 1;
+    }
+    EXPECT_EQ(from, n);
+    EXPECT_NEAR(total, least[0], 1e-9 * budget);
+  }
+}
+
 }  // namespace
 }  // namespace sliceform
