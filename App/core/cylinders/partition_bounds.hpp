@@ -24,8 +24,9 @@ struct MeasuredRuns {
 // gives with every run measured (each row until its error passes the budget): the runs
 // (start, end) not measured that could change it, every open row's rest when it needs
 // them all; none when it stands. The answer is m groups, the first count that fits the
-// budget, with its DP tables: best[g][i], the least error of patches i..n-1 in g groups,
-// and choice[g][i], where the first of them ends.
+// budget or, where none does, the first with the least error; m = 0 asks whether none
+// fits. best[g][i] is the DP's least error of patches i..n-1 in g groups, and
+// choice[g][i] where the first of them ends.
 std::vector<std::pair<int, int>> runsToMeasure(const MeasuredRuns& at, int m,
                                                const std::vector<std::vector<double>>& best,
                                                const std::vector<std::vector<int>>& choice);
