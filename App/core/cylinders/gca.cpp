@@ -16,15 +16,16 @@ namespace {
 constexpr double kErrorTolerance = 0.02;  // mm
 // The longest runs measured first, in slices, and as a share of the edge's, before
 // runsToMeasure() asks for longer ones. The partitions of 128 slices mostly take runs of 3 to
-// 10 (stanford-bunny: 17 runs of 123). Measured on stanford-bunny, ChineseDragon,
-// rocker-arm and Top: 12 slices left the fewest unions to make for the certificate's
-// rounds (21k of 30k; 16: 23k; 24: 26k), and spot at 512 slices took a tenth of an edge.
+// 10 (stanford-bunny: 17 runs of 123). Unions made on stanford-bunny, ChineseDragon,
+// rocker-arm, Top and femur, of 35.5k with every run: 8 slices first, 22.9k in 18 rounds;
+// 12, 24.0k in 9; 16, 27.2k; 24, 31.4k. Spot at 512 slices took a tenth of an edge.
 constexpr int kFirstRun = 12;
 constexpr double kFirstRunShare = 0.1;
 // Rounds of runs asked for before every row is measured to its end: equal sections tie
 // their runs' errors at 0, and a round may settle a few ties only (on the 58 files, a CAD
 // edge of 66 slices took the most, 8).
 constexpr int kMaxRounds = 16;
+
 }  // namespace
 
 double cylinderError(const std::vector<Region2d>& patches, int i, int j, double ds) {
