@@ -76,12 +76,22 @@ std::vector<std::pair<int, int>> partitionPatches(const std::vector<Region2d>& p
   std::vector<std::vector<double>> unionArea(n);  // per row, after each patch
   std::vector<int> last(n);
   std::vector<char> open(n, 1);
-  const auto measure = [&](int measured, const std::vector<int>& upTo) {
+  // `measured`: minRun while a partition may fit the budget. Where none does, any edge
+  // splits into runs of minRun to 2 minRun - 1 slices: those are measured all, and the
+  // partition with the least error taken. (Seldom: measuring them always doubled the
+  // stage's time on stanford-bunny.)
+  int measured = minRun;
+  // Whether the budget ended row i: its last run is over it and `measured` long at least.
+  const auto ended = [&](int i) {
+    const int j = rows[i].last;
+    return j >= i && err[i][j] > budget && j - i + 1 >= measured;
+  };
+  const auto measure = [&](const std::vector<int>& upTo) {
     // Rows are independent: one per core, each writing only its own row.
     parallelFor(static_cast<size_t>(n), [&](size_t index) {
       const int i = static_cast<int>(index);
       Row& row = rows[i];
-      if (row.last >= i && err[i][row.last] > budget && row.last - i + 1 >= measured) return;
+      if (ended(i)) return;
       for (int j = std::max(row.last + 1, i); j <= upTo[i]; ++j) {
         row.united = j == i ? coarse[i] : row.united.unite(coarse[j]);
         row.sumArea += area[j];
@@ -137,28 +147,26 @@ std::vector<std::pair<int, int>> partitionPatches(const std::vector<Region2d>& p
   const int firstRun = std::max(kFirstRun, static_cast<int>(kFirstRunShare * n));
   std::vector<int> upTo(n);
   for (int i = 0; i < n; ++i) upTo[i] = std::min(n - 1, i + firstRun - 1);
-  // `measured`: minRun while a partition may fit the budget. Where none does, any edge
-  // splits into runs of minRun to 2 minRun - 1 slices: those are measured all, and the
-  // partition with the least error taken. (Seldom: measuring them always doubled the
-  // stage's time on stanford-bunny.)
-  int measured = minRun, fits = -1;
+  int fits = -1;
   bool noneFits = false;  // the runs of 2 minRun - 1 slices are asked for
   for (int round = 0;; ++round) {
-    measure(measured, upTo);
+    measure(upTo);
     fits = solve();
     bool any = false;  // a row stopped short of where the budget stops it
     for (int i = 0; i < n; ++i) {
       last[i] = rows[i].last;
-      open[i] = last[i] < n - 1 && !(err[i][last[i]] > budget && last[i] - i + 1 >= measured);
+      open[i] = last[i] < n - 1 && !ended(i);
       any = any || open[i];
     }
     std::vector<std::pair<int, int>> runs;
     const int answer = fits > 0 ? fits : noneFits ? least : 0;
-    if (any && (answer < 0 || round == kMaxRounds))
-      for (int i = 0; i < n; ++i) runs.emplace_back(i, n - 1);
-    else if (any)
+    if (any && answer >= 0 && round < kMaxRounds) {
       runs =
           runsToMeasure({err, unionArea, last, open, areaBefore, ds, budget, minRun}, answer, best, choice);
+    } else if (any) {  // every open row to its end
+      for (int i = 0; i < n; ++i)
+        if (open[i]) runs.emplace_back(i, n - 1);
+    }
     if (runs.empty() && (fits > 0 || noneFits)) break;
     if (runs.empty()) {
       noneFits = true, measured = 2 * minRun - 1;
