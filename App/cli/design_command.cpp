@@ -262,7 +262,7 @@ void runDesign(DesignOptions o) {
         refusal.c_str());
     std::fflush(stdout);
     // A no-op today (the file's axes begin nothing when other frames follow): a STEP file
-    // begun for them must never stand for another frame's design (start() keeps the first).
+    // begun for them must never stand for another frame's design.
     if (writer) writer->discard();
     DirectionChoice other;
     std::optional<Design> turned;

@@ -4,15 +4,19 @@
 #include <gtest/gtest.h>
 
 #include <BRepAlgoAPI_Fuse.hxx>
+#include <BRepBndLib.hxx>
 #include <BRepBuilderAPI_Transform.hxx>
 #include <BRepPrimAPI_MakeBox.hxx>
 #include <BRepPrimAPI_MakeCylinder.hxx>
 #include <BRepPrimAPI_MakeSphere.hxx>
+#include <STEPControl_Reader.hxx>
 #include <TopTools_ListOfShape.hxx>
 #include <gp_Trsf.hxx>
 
 #include <cmath>
 
+#include "assembly/fold.hpp"
+#include "output/design_files.hpp"
 #include "output/report_json.hpp"
 #include "pipeline/directions.hpp"
 #include "test_support.hpp"
@@ -173,6 +177,55 @@ TEST(Directions, AFrameDesignedAlreadyIsNotDesignedAgain) {
   EXPECT_TRUE(taken.trials[plain.chosen].designed);
   EXPECT_FALSE(taken.trials[plain.chosen].buildable);
   EXPECT_NE(taken.chosen, plain.chosen);
+}
+
+// A buildable design is heard of before its layout (its 3D files begin beside the layout,
+// as the file's axes' do), and the last design heard of is the one returned.
+TEST(Directions, ABuildableDesignIsHeardOfBeforeItsLayout) {
+  const Model model = modelFromShape(table(), "table");
+  std::vector<std::pair<Vec3, bool>> heard;  // the frame's U, and whether it was laid out
+  DirectionChoice choice;
+  const Design d = designInBestFrame(model, coarse(), choice, {}, [&](const Design& ready) {
+    heard.emplace_back(ready.arrangement.params.u, ready.layout.packing.sheets > 0);
+  });
+  ASSERT_TRUE(choice.trials[choice.chosen].buildable);
+  ASSERT_FALSE(heard.empty());
+  EXPECT_FALSE(heard.front().second);
+  for (const auto& [u, laidOut] : heard) EXPECT_EQ(u, d.arrangement.params.u);
+  EXPECT_GT(d.layout.packing.sheets, 0);
+}
+
+double boxDiagonal(const TopoDS_Shape& s) {
+  Bnd_Box box;
+  BRepBndLib::Add(s, box);
+  return box.CornerMin().Distance(box.CornerMax());
+}
+
+// Files begun for a design in one frame give way to a design in another (its layout failed,
+// and the directions went on): assembly.step is the later design's. The same frame again
+// changes nothing.
+TEST(Directions, FilesBegunForOneFrameGiveWayToAnother) {
+  const Model model = modelFromShape(table(), "table");
+  const Design first = runDesign(model, coarse());
+  DesignParams turned = coarse();
+  turned.arrangement.u = {0, 1, 0}, turned.arrangement.v = {0, 0, 1};
+  const Design second = runDesign(model, turned);
+  const double wanted = boxDiagonal(assemble(second.arrangement, second.patches, 60));
+  ASSERT_GT(std::abs(boxDiagonal(assemble(first.arrangement, first.patches, 60)) - wanted), 1.0);
+  test::TempDir dir;
+  {
+    DesignFilesWriter writer(dir.file("out"), 60);
+    writer.start(first);
+    writer.start(second);
+    writer.start(second);
+    writer.finish(model, turned, second);
+  }
+  STEPControl_Reader reader;
+  ASSERT_EQ(reader.ReadFile(dir.file("out/assembly.step").c_str()), IFSelect_RetDone);
+  reader.TransferRoots();
+  EXPECT_NEAR(boxDiagonal(reader.OneShape()), wanted, 0.1);
+  for (const auto& entry : std::filesystem::directory_iterator(dir.file("out")))
+    EXPECT_NE(entry.path().filename().string().rfind(".assembly-", 0), 0u) << entry.path();
 }
 
 }  // namespace

@@ -54,7 +54,10 @@ void DesignFilesWriter::discard() {
 }
 
 void DesignFilesWriter::start(const Design& d) {
-  if (step_.valid()) return;
+  const Vec3 &u = d.arrangement.params.u, &v = d.arrangement.params.v;
+  if (step_.valid() && u == begunU_ && v == begunV_) return;
+  discard();
+  begunU_ = u, begunV_ = v;
   // The design's transient memory (the slot search's caches) is freed by now: back to the
   // system before the STEP writer and the other files ask for theirs (support/free_memory).
   releaseFreeMemory();

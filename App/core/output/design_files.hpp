@@ -42,8 +42,9 @@ class DesignFilesWriter {
   DesignFilesWriter(const DesignFilesWriter&) = delete;
   DesignFilesWriter& operator=(const DesignFilesWriter&) = delete;
 
-  // Starts writing assembly.step; the design's arrangement and patches are final. Once only,
-  // unless discard() came between.
+  // Starts writing assembly.step; the design's arrangement and patches are final. A design
+  // in the frame begun already changes nothing; one in another frame (the layout of the
+  // first failed, and the direction search went on) replaces it, as discard() then start().
   void start(const Design& design);
   // Drops what start() began (the caller goes on with another design): waits for the STEP
   // thread and removes its file.
@@ -57,6 +58,7 @@ class DesignFilesWriter {
   double foldAngle_;
   TopoDS_Shape assembly_;     // the patches at the fold pose, from start()
   std::string stepFile_;      // where the STEP thread writes, renamed by finish()
+  Vec3 begunU_, begunV_;      // the frame of the design start() began
   bool madeFolder_ = false;   // the folder did not exist before start()
   std::future<double> step_;  // ms the STEP file took
 };

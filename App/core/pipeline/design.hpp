@@ -52,6 +52,8 @@ constexpr int kDesignStages = 6;
 // Hears of the design once its patches are built and checked, before the layout: the 3D
 // assembly is then final, so its files can be written while the sheets are laid out. The
 // design is the pipeline's own, about to change: copy what is needed, keep no reference.
+// designInBestFrame may hear of a design in another frame after one whose layout failed:
+// the later one replaces it (DesignFilesWriter::start).
 using PatchesReady = std::function<void(const Design& design)>;
 
 // `deadline`: the run's, when it designs more than once (other frames); by default
