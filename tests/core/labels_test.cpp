@@ -7,7 +7,9 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <tuple>
 
+#include "layout/label_room.hpp"
 #include "layout/labels.hpp"
 
 namespace sliceform {
@@ -233,6 +235,46 @@ TEST(PartnerLabels, ASmallerPatchIdWhereItTookTheSlotsRoom) {
     for (size_t j = 0; j < i; ++j)
       EXPECT_TRUE(boxOf(l).intersect(boxOf(labels.partners[j])).empty()) << l.text;
   }
+}
+
+// The bounds that end a retry before its leaders (label_room.hpp): where they say no label
+// may fit a slot, the placers find none, with those labels taken or more. Combs whose slots
+// crowd, with strips of paper under them from too narrow for any label to wide enough for
+// a leader's, and 1 mm labels scattered over them.
+TEST(PartnerLabels, WhereNoLabelMayFitNoneIsFound) {
+  int none = 0, found = 0;
+  for (const auto& [count, pitch, below] : {std::tuple{20, 1.2, 0.8}, std::tuple{12, 1.6, 2.0},
+                                            std::tuple{8, 2.4, 3.0}, std::tuple{6, 4.0, 6.0}}) {
+    const Comb c = comb(count, pitch, below);
+    const LabelPaper paper = labelPaper(c.paper);
+    const BoxRoom& leaders = leaderPaper(paper);
+    const LabelPaper lastResort{BoxRoom(leaders.region()), c.paper, {}, std::nullopt};
+    for (int k = 0; k < 8; ++k) {
+      std::vector<Label> taken;
+      for (double x = 1 + k * 0.9; x < 60; x += 7)
+        taken.push_back(setLabel("W" + std::to_string(k), {x, 10 - below + 0.4 * k}, kMinLabelHeight, k % 2));
+      if (k == 0) taken.clear();
+      for (const LabelSpot& s : c.spots) {
+        const std::optional<Label> leader =
+            leaderLabel(paper.inner, leaders, s, taken, {1.8, kMinLabelHeight});
+        int missing = 0;
+        placePartners(lastResort, {s}, taken, kMinLabelHeight, missing);
+        const bool leaderMay = leaderMayFit(paper.inner, leaders, s, taken);
+        const bool besideMay = besideMayFit(leaders, s, taken);
+        if (!leaderMay) {
+          EXPECT_FALSE(leader) << s.text << " with " << taken.size() << " taken";
+        }
+        if (!besideMay) {
+          EXPECT_EQ(missing, 1) << s.text << " with " << taken.size() << " taken";
+        }
+        none += !leaderMay + !besideMay;
+        found += (leader ? 1 : 0) + (missing == 0);
+      }
+    }
+  }
+  // Both answers were asked for: the test would catch a bound that said none too often.
+  EXPECT_GT(none, 50);
+  EXPECT_GT(found, 50);
 }
 
 }  // namespace

@@ -45,4 +45,14 @@ std::vector<Box2> leaderBoxes(const std::vector<Label>& labels);
 std::optional<Label> leaderLabel(const BoxRoom& inner, const BoxRoom& leaderRoom, const LabelSpot& s,
                                  const std::vector<Label>& taken, const std::vector<double>& heights);
 
+// Whether a label may yet be found for a slot left without one, clear of `taken` or of any
+// labels set after them: false only where surely none is. Every room the placer would try
+// lies in a room asked here, and more labels only take room away.
+// - leaderMayFit: leaderLabel at kMinLabelHeight, its box over `inner`.
+// - besideMayFit: the last resort, a kMinLabelHeight label beside the slot or on its line
+//   over `paper` (the leaders' paper), whatever other hinges it must keep off.
+bool leaderMayFit(const BoxRoom& inner, const BoxRoom& leaderRoom, const LabelSpot& s,
+                  const std::vector<Label>& taken);
+bool besideMayFit(const BoxRoom& paper, const LabelSpot& s, const std::vector<Label>& taken);
+
 }  // namespace sliceform

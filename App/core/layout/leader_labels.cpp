@@ -236,6 +236,15 @@ Stroke shortestLeader(const Field& f, const Routes& p, const std::vector<Vec2>& 
   return leader;
 }
 
+// The window every room a leader label of the slot tries lies in: kReach about each of its
+// ends `ts` (not empty).
+Box2 reachOf(const std::vector<Vec2>& ts) {
+  Vec2 lo = ts.front(), hi = ts.front();
+  for (const Vec2& t : ts)
+    lo = {std::min(lo.x, t.x), std::min(lo.y, t.y)}, hi = {std::max(hi.x, t.x), std::max(hi.y, t.y)};
+  return {{lo.x - kReach, lo.y - kReach}, {hi.x + kReach, hi.y + kReach}, false};
+}
+
 }  // namespace
 
 std::vector<Box2> leaderBoxes(const std::vector<Label>& labels) {
@@ -266,22 +275,19 @@ std::optional<Label> leaderLabel(const BoxRoom& inner, const BoxRoom& leaderRoom
   const std::vector<Box2> keepOff = leaderBoxes(taken);
   const std::vector<Vec2> ts = targets(leaderRoom.region(), s);
   if (ts.empty()) return std::nullopt;
-  const auto windowAbout = [](Vec2 lo, Vec2 hi) {
-    return Box2{{lo.x - kReach, lo.y - kReach}, {hi.x + kReach, hi.y + kReach}, false};
+  const auto windowAbout = [](Vec2 t) {
+    return Box2{{t.x - kReach, t.y - kReach}, {t.x + kReach, t.y + kReach}, false};
   };
   // A room is where a centre puts the box on the paper, clear of what is taken: a larger
   // box, or a smaller window, has no room where a smaller box, or a larger window, has
   // none. Most slots that come here have no room at all (MODERN_Cooker_1: 32k of 36k rooms
   // empty), so the smallest size is asked first, in one window about every target.
-  Vec2 lo = ts.front(), hi = ts.front();
-  for (const Vec2& t : ts)
-    lo = {std::min(lo.x, t.x), std::min(lo.y, t.y)}, hi = {std::max(hi.x, t.x), std::max(hi.y, t.y)};
   const size_t smallest = heights.size() - 1;
   const auto freeAt = [&](size_t j, bool vertical, const Box2& window) {
     return freeFor(inner, taken, halfSize(s.text, heights[j], vertical), window, keepOff);
   };
-  const bool noRoom[] = {freeAt(smallest, false, windowAbout(lo, hi)).empty(),
-                         freeAt(smallest, true, windowAbout(lo, hi)).empty()};
+  const bool noRoom[] = {freeAt(smallest, false, reachOf(ts)).empty(),
+                         freeAt(smallest, true, reachOf(ts)).empty()};
   if (noRoom[0] && noRoom[1]) return std::nullopt;
   // The room for each target, size and direction, the same for both gaps: made once.
   std::vector<std::optional<Region2d>> rooms(ts.size() * heights.size() * 2);
@@ -290,8 +296,8 @@ std::optional<Label> leaderLabel(const BoxRoom& inner, const BoxRoom& leaderRoom
       return rooms[(i * heights.size() + k) * 2 + vertical];
     };
     if (!at(smallest))
-      at(smallest) = noRoom[vertical] ? Region2d{} : freeAt(smallest, vertical, windowAbout(ts[i], ts[i]));
-    if (!at(j)) at(j) = at(smallest)->empty() ? Region2d{} : freeAt(j, vertical, windowAbout(ts[i], ts[i]));
+      at(smallest) = noRoom[vertical] ? Region2d{} : freeAt(smallest, vertical, windowAbout(ts[i]));
+    if (!at(j)) at(j) = at(smallest)->empty() ? Region2d{} : freeAt(j, vertical, windowAbout(ts[i]));
     return *at(j);
   };
   for (const double gap : kLeaderGaps)
@@ -318,6 +324,19 @@ std::optional<Label> leaderLabel(const BoxRoom& inner, const BoxRoom& leaderRoom
         }
     }
   return std::nullopt;
+}
+
+bool leaderMayFit(const BoxRoom& inner, const BoxRoom& leaderRoom, const LabelSpot& s,
+                  const std::vector<Label>& taken) {
+  const std::vector<Vec2> ts = targets(leaderRoom.region(), s);
+  if (ts.empty()) return false;
+  // leaderLabel's first question, at the smallest size: the same query, so leaderLabel
+  // then answers it from the room's memory.
+  const std::vector<Box2> keepOff = leaderBoxes(taken);
+  for (const bool vertical : {false, true})
+    if (!freeFor(inner, taken, halfSize(s.text, kMinLabelHeight, vertical), reachOf(ts), keepOff).empty())
+      return true;
+  return false;
 }
 
 }  // namespace sliceform
