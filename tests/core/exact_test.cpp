@@ -385,6 +385,49 @@ TEST(RebuiltFaces, SlotsCutAcrossANearlyStraightHyperbolaMeetItOnTheCurve) {
   EXPECT_NEAR(area(rebuilt), area(BRepAlgoAPI_Cut(section, slots).Shape()), 1e-4);
 }
 
+// Two curves that cross on a third: the union of a rectangle below the x axis and two
+// discs whose circles both meet the axis at the origin, at right angles, touching each
+// other there. Each circle's polygon crosses the axis a little beside the origin, so the
+// union's polygon runs a few micrometres along the rectangle's edge between them; the exact
+// crossings both lie at the origin, and that run has no length. The rebuild drops it and
+// joins the circles (occt-misc Motor-c.brep: two ellipses on a slot's wall; the patch went
+// to the Boolean fuse).
+TEST(RebuiltFaces, ARunTheCrossingsLeaveNoLengthIsDropped) {
+  const gp_Pln plane(gp_Pnt(0, 0, 0), gp_Dir(0, 0, 1));
+  const auto disc = [&](double x) {  // the seam away from the origin: no polygon vertex there
+    const gp_Circ circle(gp_Ax2(gp_Pnt(x, 0, 0), gp_Dir(0, 0, 1), gp_Dir(0, 1, 0)), 5);
+    return BRepBuilderAPI_MakeFace(plane, BRepBuilderAPI_MakeWire(BRepBuilderAPI_MakeEdge(circle)).Wire())
+        .Face();
+  };
+  BRepBuilderAPI_MakePolygon below(gp_Pnt(-12, -8, 0), gp_Pnt(12, -8, 0), gp_Pnt(12, 0, 0), gp_Pnt(-12, 0, 0),
+                                   Standard_True);
+  const std::vector<TopoDS_Shape> sections{BRepBuilderAPI_MakeFace(plane, below.Wire()).Face(), disc(-5),
+                                           disc(5)};
+  const SliceFrame frame = makeSliceFrame({0, 0, 1}, {0, 1, 0});
+  const double deflection = 1e-3;
+  const TopoDS_Shape rebuilt = rebuiltFaces(
+      sections, [](const std::vector<Region2d>& p) { return Region2d::uniteAll(p); }, frame, 0, deflection);
+  ASSERT_FALSE(rebuilt.IsNull());
+  EXPECT_TRUE(BRepCheck_Analyzer(rebuilt).IsValid());
+  // Every straight edge is a stretch of the rectangle's outline more than a micrometre long,
+  // and the circles meet at the origin.
+  for (TopExp_Explorer e(rebuilt, TopAbs_EDGE); e.More(); e.Next()) {
+    const BRepAdaptor_Curve curve(TopoDS::Edge(e.Current()));
+    if (curve.GetType() != GeomAbs_Line) continue;
+    EXPECT_GT(curve.Value(curve.FirstParameter()).Distance(curve.Value(curve.LastParameter())), 1e-3);
+  }
+  bool origin = false;
+  for (TopExp_Explorer v(rebuilt, TopAbs_VERTEX); v.More(); v.Next()) {
+    const TopoDS_Vertex& vertex = TopoDS::Vertex(v.Current());
+    origin = origin || BRep_Tool::Pnt(vertex).Distance(gp_Pnt(0, 0, 0)) < 1e-6;
+    EXPECT_LT(BRep_Tool::Tolerance(vertex), 1e-5);
+  }
+  EXPECT_TRUE(origin);
+  const TopoDS_Shape fused =
+      BRepAlgoAPI_Fuse(BRepAlgoAPI_Fuse(sections[0], sections[1]).Shape(), sections[2]).Shape();
+  EXPECT_NEAR(area(rebuilt), area(fused), 1e-4);
+}
+
 // A mesh patch's outline loses the points that add nothing within the tolerance: a circle of
 // 2000 points (as a fine scan gives) with a slot and a hole keeps its slot corners, its hole
 // and its area, with far fewer points.

@@ -244,6 +244,17 @@ double footParameter(const Source& s, double t, const gp_Pnt& q, double deflecti
   return s.curve->Value(u).Distance(q) < start ? u : t;
 }
 
+// The stretch of the source's curve a run stands for, lo < hi: within a curve's range, at
+// most a period of a closed one. False where none is left.
+bool stretch(const Source& s, const Run& run, double& lo, double& hi) {
+  lo = std::min(run.t0, run.t1), hi = std::max(run.t0, run.t1);
+  if (!s.curve->IsPeriodic())
+    lo = std::max(lo, s.curve->FirstParameter()), hi = std::min(hi, s.curve->LastParameter());
+  else
+    hi = std::min(hi, lo + s.curve->Period());
+  return hi > lo;
+}
+
 // The edges of one loop of the combined region, in its order; empty where unsure.
 std::vector<TopoDS_Edge> loopEdges(const Region2d::Loop& original, const std::vector<Source>& sources,
                                    const SegmentGrid& grid, const SliceFrame& frame, double position,
@@ -347,13 +358,32 @@ std::vector<TopoDS_Edge> loopEdges(const Region2d::Loop& original, const std::ve
   merge();
   std::rotate(runs.begin(), runs.begin() + static_cast<long>(runs.size() / 2), runs.end());
   merge();
-  // The vertex where run r ends and run r + 1 begins, the curves' crossing.
-  BRep_Builder builder;
-  std::vector<TopoDS_Vertex> ends(runs.size());
-  for (size_t r = 0; r < runs.size(); ++r) {
+  // Where run r ends and run r + 1 begins: the curves' crossing. Both parameters of a
+  // crossing are refined before either is read, so the order does not matter.
+  const auto refine = [&](size_t r) {
     Run& a = runs[r];
     Run& b = runs[(r + 1) % runs.size()];
     if (a.source != b.source) refineCrossing(sources[a.source], a.t1, sources[b.source], b.t0, deflection);
+  };
+  for (size_t r = 0; r < runs.size(); ++r) refine(r);
+  // A run its crossings leave no stretch of its curve is dropped, and its neighbours cross
+  // each other: two curves that cross on a third (occt-misc Motor-c.brep: two ellipses on a
+  // slot's wall, their polygons 2 µm apart there).
+  double lo, hi;
+  for (size_t r = 0; r < runs.size() && runs.size() > 2;) {
+    if (stretch(sources[runs[r].source], runs[r], lo, hi)) {
+      ++r;
+      continue;
+    }
+    runs.erase(runs.begin() + static_cast<long>(r));
+    refine((r + runs.size() - 1) % runs.size());
+    r = 0;
+  }
+  BRep_Builder builder;
+  std::vector<TopoDS_Vertex> ends(runs.size());
+  for (size_t r = 0; r < runs.size(); ++r) {
+    const Run& a = runs[r];
+    const Run& b = runs[(r + 1) % runs.size()];
     const gp_Pnt pa = sources[a.source].curve->Value(a.t1), pb = sources[b.source].curve->Value(b.t0);
     const gp_Pnt mid((pa.XYZ() + pb.XYZ()) / 2);
     builder.MakeVertex(ends[r], mid, std::max(Precision::Confusion(), 1.01 * pa.Distance(pb) / 2));
@@ -365,12 +395,7 @@ std::vector<TopoDS_Edge> loopEdges(const Region2d::Loop& original, const std::ve
     const TopoDS_Vertex& first = ends[(r + runs.size() - 1) % runs.size()];
     const TopoDS_Vertex& last = ends[r];
     const bool forward = run.t1 > run.t0;
-    double lo = forward ? run.t0 : run.t1, hi = forward ? run.t1 : run.t0;
-    if (!s.curve->IsPeriodic())
-      lo = std::max(lo, s.curve->FirstParameter()), hi = std::min(hi, s.curve->LastParameter());
-    else
-      hi = std::min(hi, lo + s.curve->Period());
-    if (!(hi > lo)) return {};
+    if (!stretch(s, run, lo, hi)) return {};
     const TopoDS_Vertex& vlo = forward ? first : last;
     const TopoDS_Vertex& vhi = forward ? last : first;
     for (const auto& [t, v] : {std::pair{lo, vlo}, std::pair{hi, vhi}}) {
