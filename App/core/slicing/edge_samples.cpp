@@ -20,13 +20,17 @@ double offChord(const gp_Pnt& p, const gp_Pnt& a, const gp_Pnt& b) {
   return (ap - ab * f).Magnitude();
 }
 
-// The points strictly between (t0, p0) and (t1, p1), halving while the curve's middle lies
-// off the chord. 2^20 pieces of one chord is far past any deflection we ask for.
+// The points strictly between (t0, p0) and (t1, p1), halving while the curve's middle or
+// quarters lie off the chord. The middle alone let a chord through whose curve bends away
+// near an end (occt-misc Bottom.brep: a section's B-spline 0.26 mm off its 3-point polygon
+// at a deflection of 0.023 mm, its middles within 0.013). 2^20 pieces of one chord is far
+// past any deflection we ask for.
 void refine(const Adaptor3d_Curve& curve, double t0, const gp_Pnt& p0, double t1, const gp_Pnt& p1,
             double deflection, int depth, CurveSamples& out) {
   const double tm = (t0 + t1) / 2;
   const gp_Pnt pm = curve.Value(tm);
-  if (depth >= 20 || offChord(pm, p0, p1) <= deflection) return;
+  const auto on = [&](double t) { return offChord(curve.Value(t), p0, p1) <= deflection; };
+  if (depth >= 20 || (offChord(pm, p0, p1) <= deflection && on((t0 + tm) / 2) && on((tm + t1) / 2))) return;
   refine(curve, t0, p0, tm, pm, deflection, depth + 1, out);
   out.t.push_back(tm);
   out.p.push_back(pm);
