@@ -236,6 +236,13 @@ TEST(ExactPatches, OnlySectionsThatAddToTheUnionAreFused) {
   EXPECT_EQ(sectionsAddingToUnion(sections, 0).size(), 2u);
 }
 
+// The union of planar `sections` on the plane z = 0, rebuilt from their exact edges.
+TopoDS_Shape rebuiltUnion(const std::vector<TopoDS_Shape>& sections, double deflection) {
+  return rebuiltFaces(
+      sections, [](const std::vector<Region2d>& p) { return Region2d::uniteAll(p); },
+      makeSliceFrame({0, 0, 1}, {0, 1, 0}), 0, deflection);
+}
+
 // A cylinder's section rebuilt from its slices' exact edges: the union of two discs and of a
 // 128-gon whose corners stand 0.5 µm outside the first disc (as the sections of neighbouring
 // slices cross each other, within 2 deflections) is two circular arcs, not a run along every
@@ -257,8 +264,7 @@ TEST(RebuiltFaces, UnionOfSectionsKeepsArcsAndTheFusedArea) {
                                            BRepBuilderAPI_MakeFace(plane, corners.Wire()).Face()};
   const SliceFrame frame = makeSliceFrame({0, 0, 1}, {0, 1, 0});
   const double deflection = 1e-3;
-  const TopoDS_Shape rebuilt = rebuiltFaces(
-      sections, [](const std::vector<Region2d>& p) { return Region2d::uniteAll(p); }, frame, 0, deflection);
+  const TopoDS_Shape rebuilt = rebuiltUnion(sections, deflection);
   ASSERT_FALSE(rebuilt.IsNull());
   EXPECT_TRUE(BRepCheck_Analyzer(rebuilt).IsValid());
   int faces = 0, edges = 0;
@@ -403,10 +409,8 @@ TEST(RebuiltFaces, ARunTheCrossingsLeaveNoLengthIsDropped) {
                                    Standard_True);
   const std::vector<TopoDS_Shape> sections{BRepBuilderAPI_MakeFace(plane, below.Wire()).Face(), disc(-5),
                                            disc(5)};
-  const SliceFrame frame = makeSliceFrame({0, 0, 1}, {0, 1, 0});
   const double deflection = 1e-3;
-  const TopoDS_Shape rebuilt = rebuiltFaces(
-      sections, [](const std::vector<Region2d>& p) { return Region2d::uniteAll(p); }, frame, 0, deflection);
+  const TopoDS_Shape rebuilt = rebuiltUnion(sections, deflection);
   ASSERT_FALSE(rebuilt.IsNull());
   EXPECT_TRUE(BRepCheck_Analyzer(rebuilt).IsValid());
   // Every straight edge is a stretch of the rectangle's outline more than a micrometre long,

@@ -275,9 +275,6 @@ std::optional<Label> leaderLabel(const BoxRoom& inner, const BoxRoom& leaderRoom
   const std::vector<Box2> keepOff = leaderBoxes(taken);
   const std::vector<Vec2> ts = targets(leaderRoom.region(), s);
   if (ts.empty()) return std::nullopt;
-  const auto windowAbout = [](Vec2 t) {
-    return Box2{{t.x - kReach, t.y - kReach}, {t.x + kReach, t.y + kReach}, false};
-  };
   // A room is where a centre puts the box on the paper, clear of what is taken: a larger
   // box, or a smaller window, has no room where a smaller box, or a larger window, has
   // none. Most slots that come here have no room at all (MODERN_Cooker_1: 32k of 36k rooms
@@ -296,8 +293,8 @@ std::optional<Label> leaderLabel(const BoxRoom& inner, const BoxRoom& leaderRoom
       return rooms[(i * heights.size() + k) * 2 + vertical];
     };
     if (!at(smallest))
-      at(smallest) = noRoom[vertical] ? Region2d{} : freeAt(smallest, vertical, windowAbout(ts[i]));
-    if (!at(j)) at(j) = at(smallest)->empty() ? Region2d{} : freeAt(j, vertical, windowAbout(ts[i]));
+      at(smallest) = noRoom[vertical] ? Region2d{} : freeAt(smallest, vertical, reachOf({ts[i]}));
+    if (!at(j)) at(j) = at(smallest)->empty() ? Region2d{} : freeAt(j, vertical, reachOf({ts[i]}));
     return *at(j);
   };
   for (const double gap : kLeaderGaps)
