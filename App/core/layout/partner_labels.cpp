@@ -82,6 +82,21 @@ Interval nearerOwn(const std::vector<LabelSpot>& spots, const LabelSpot& s, Inte
   return x;
 }
 
+// Where the centre of `s`'s label set `way` at cap height `height` is sought: x in [lo, hi]
+// and y in `y`; `side` is how far beside the slot's line the nearest centre lies.
+struct Window {
+  double lo, hi, side;
+  Interval y;
+};
+Window windowOf(const LabelSpot& s, Way way, double height) {
+  const Vec2 half = halfSize(s.text, height, way != Way::Across);
+  const double reach = half.y + 2 * height;
+  if (way == Way::OnLine)  // on the line, to Clipper's micrometre
+    return {s.x - 1e-3, s.x + 1e-3, 0, {s.w.lo - reach - 2 * half.y, s.w.hi + reach + 2 * half.y}};
+  const double side = s.slotWidth / 2 + kGap + half.x;
+  return {s.x - side - half.x - kGap, s.x + side + half.x + kGap, side, {s.w.lo - reach, s.w.hi + reach}};
+}
+
 // The label of `s` set `way` at cap height `height` where its box has room nearest the
 // slot's middle and reads as this slot's; none when there is none. Beside the slot the box
 // reaches the hinge's stretch, or comes within two cap heights of its ends (a short hinge
@@ -91,15 +106,11 @@ std::optional<Label> placeAt(const BoxRoom& inner, const std::vector<Label>& tak
                              double height) {
   const bool vertical = way != Way::Across;
   const Vec2 half = halfSize(s.text, height, vertical);
-  double reach = half.y + 2 * height, lo, hi, side = 0;
-  if (way == Way::OnLine) {
-    reach += 2 * half.y;
-    lo = s.x - 1e-3, hi = s.x + 1e-3;  // on the line, to Clipper's micrometre
-  } else {
-    side = s.slotWidth / 2 + kGap + half.x;
-    lo = s.x - side - half.x - kGap, hi = s.x + side + half.x + kGap;
-  }
-  const Interval y{s.w.lo - reach, s.w.hi + reach};
+  // Plain copies, not a structured binding: the lambda below captures them (C++17).
+  const Window w = windowOf(s, way, height);
+  double lo = w.lo, hi = w.hi;
+  const double side = w.side;
+  const Interval y = w.y;
   const std::vector<Box2> lines = otherHinges(spots, s, {y.lo - half.y, y.hi + half.y});
   // The room between `lo` and `hi` nearest either side of the slot, the nearer first, if
   // it reads as this slot's (on its line a label continues its slot).
@@ -200,14 +211,17 @@ std::vector<size_t> inOrder(size_t n) {
 }  // namespace
 
 bool besideMayFit(const BoxRoom& paper, const LabelSpot& s, const std::vector<Label>& taken) {
-  // One window about the slot holds placeAt's windows of every way at this size (a box
-  // turned either way), and no other hinge's line is kept off.
+  // The box across the slot, then turned along it: each in the windows of the ways that set
+  // it so (placeAt's own), with no other hinge's line kept off.
   for (const bool vertical : {false, true}) {
-    const Vec2 box = halfSize(s.text, kMinLabelHeight, vertical);
-    const double half = std::max(box.x, box.y), slop = 0.01;
-    const double x = s.slotWidth / 2 + 2 * kGap + 2 * half + slop, y = 3 * half + 2 * kMinLabelHeight + slop;
-    const Box2 window{{s.x - x, s.w.lo - y}, {s.x + x, s.w.hi + y}, false};
-    if (!freeFor(paper, taken, box, window).empty()) return true;
+    Box2 window{{HUGE_VAL, HUGE_VAL}, {-HUGE_VAL, -HUGE_VAL}, false};
+    for (const Way way : {Way::Across, Way::Along, Way::OnLine}) {
+      if ((way != Way::Across) != vertical) continue;
+      const Window w = windowOf(s, way, kMinLabelHeight);
+      window.min = {std::min(window.min.x, w.lo), std::min(window.min.y, w.y.lo)};
+      window.max = {std::max(window.max.x, w.hi), std::max(window.max.y, w.y.hi)};
+    }
+    if (!freeFor(paper, taken, halfSize(s.text, kMinLabelHeight, vertical), window).empty()) return true;
   }
   return false;
 }
