@@ -430,14 +430,23 @@ Handle(TopTools_HSequenceOfShape) FaceByFace::planeEdges(const gp_Pln& plane, do
     for (const int e : f.edges)
       for (const auto& [p, vertex] : crossed[e]) {
         bool on = false;
+        // 10 nm more than the tolerances say: edges of real files stray from their faces
+        // by up to 1 nm where both claim 0.1 nm (occ/Bottom.brep).
+        std::vector<double> budget;
+        for (const SectionCurve& c : curves)
+          budget.push_back(2 * (edges_[e].tolerance + faceTolerance + c.tolerance) + 1e-5);
         for (size_t k = 0; k < curves.size(); ++k) {
           const auto [t, distance] = projectOnSection(curves[k], p);
-          // 10 nm more than the tolerances say: edges of real files stray from their faces
-          // by up to 1 nm where both claim 0.1 nm (occ/Bottom.brep).
-          if (distance <= 2 * (edges_[e].tolerance + faceTolerance + curves[k].tolerance) + 1e-5)
-            ends[k].push_back({t, vertex}), on = true;
+          if (distance <= budget[k]) ends[k].push_back({t, vertex}), on = true;
         }
-        if (!on) return nullptr;
+        if (on) continue;
+        const std::optional<std::pair<size_t, double>> grazed = grazedFoot(s, curves, budget, p, normal_);
+        if (!grazed) return nullptr;
+        // The vertex's tolerance reaches the curve's end, as the pieces' ends must.
+        const auto [k, t] = *grazed;
+        const double gap = curves[k].curve->Value(t).Distance(p);
+        if (gap > BRep_Tool::Tolerance(vertex)) BRep_Builder().UpdateVertex(vertex, gap * (1 + 1e-6));
+        ends[k].push_back({t, vertex});
       }
     for (size_t k = 0; k < curves.size(); ++k) {
       const SectionCurve& c = curves[k];

@@ -2,6 +2,7 @@
 #include "slicing/surface_sections.hpp"
 
 #include <ElCLib.hxx>
+#include <ElSLib.hxx>
 #include <GeomAPI_ProjectPointOnCurve.hxx>
 #include <Geom_Circle.hxx>
 #include <Geom_Ellipse.hxx>
@@ -154,6 +155,62 @@ std::pair<double, double> projectOnSection(const SectionCurve& c, const gp_Pnt& 
     return {projection.LowerDistanceParameter(), projection.LowerDistance()};
   }
   return {t, c.curve->Value(t).Distance(p)};
+}
+
+namespace {
+
+// Nearer tangent than this a crossing is not given to its nearest curve (grazedFoot): the
+// section's curves come together there (a cylinder's two lines lie 2 r sin(phi) apart), and
+// the foot is as unsure as the distance is magnified (a thousandfold at this bound).
+constexpr double kMinGrazingSine = 1e-3;
+
+// The sine of the angle between the normal of `s` at `p` (a point of it) and `n`, for the
+// surfaces planeSurfaceCurves solves; 0 where it has no normal there (an apex, a pole).
+double sineToNormal(const BRepAdaptor_Surface& s, const gp_Pnt& p, const gp_Dir& n) {
+  double u = 0, v = 0;
+  switch (s.GetType()) {
+    case GeomAbs_Plane:
+      ElSLib::Parameters(s.Plane(), p, u, v);
+      break;
+    case GeomAbs_Cylinder:
+      ElSLib::Parameters(s.Cylinder(), p, u, v);
+      break;
+    case GeomAbs_Cone:
+      ElSLib::Parameters(s.Cone(), p, u, v);
+      break;
+    case GeomAbs_Sphere:
+      ElSLib::Parameters(s.Sphere(), p, u, v);
+      break;
+    case GeomAbs_Torus:
+      ElSLib::Parameters(s.Torus(), p, u, v);
+      break;
+    default:
+      return 0;
+  }
+  gp_Pnt at;
+  gp_Vec du, dv;
+  s.D1(u, v, at, du, dv);
+  const gp_Vec normal = du.Crossed(dv);
+  const double length = normal.Magnitude();
+  return length > 1e-12 ? (normal / length).Crossed(gp_Vec(n)).Magnitude() : 0;
+}
+
+}  // namespace
+
+std::optional<std::pair<size_t, double>> grazedFoot(const BRepAdaptor_Surface& s,
+                                                    const std::vector<SectionCurve>& curves,
+                                                    const std::vector<double>& budget, const gp_Pnt& p,
+                                                    const gp_Dir& n) {
+  size_t nearest = curves.size();
+  std::pair<double, double> foot{0, std::numeric_limits<double>::max()};
+  for (size_t k = 0; k < curves.size(); ++k) {
+    const std::pair<double, double> at = projectOnSection(curves[k], p);
+    if (at.second < foot.second) foot = at, nearest = k;
+  }
+  if (nearest == curves.size()) return std::nullopt;
+  const double sine = sineToNormal(s, curves[nearest].curve->Value(foot.first), n);
+  if (sine < kMinGrazingSine || foot.second * sine > budget[nearest]) return std::nullopt;
+  return std::pair{nearest, foot.first};
 }
 
 }  // namespace sliceform
