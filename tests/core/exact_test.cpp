@@ -40,6 +40,8 @@
 #include "exact/rebuilt_faces.hpp"
 #include "geometry/simplify.hpp"
 #include "realization/realize.hpp"
+#include "slicing/brep_slicer.hpp"
+#include "slicing/slice_set.hpp"
 #include "support/error.hpp"
 #include "support/occt_statics.hpp"
 #include "test_support.hpp"
@@ -604,6 +606,29 @@ TEST(Fold, StepWriterLeavesOcctsGlobalSettingsAsTheyWere) {
   EXPECT_EQ(saved.restore(), 2);
   EXPECT_EQ(saved.restore(), 0);
   EXPECT_EQ(StaticsSnapshot().describe(), before.describe());
+}
+
+}  // namespace
+}  // namespace sliceform
+
+namespace sliceform {
+namespace {
+
+// A face's area against a bound, read from its polygon where the polygon's error cannot
+// decide: a disc of radius 1, its polygon 0.04 mm² short of pi within the outline's
+// deflection. Near pi the surface integration decides, so the answer is the exact one.
+TEST(ExactPatches, AreaAtLeastIsTheExactAreasAnswer) {
+  const gp_Circ circle(gp_Ax2(gp_Pnt(3, 4, 0), gp_Dir(0, 0, 1)), 1);
+  const TopoDS_Face disc =
+      BRepBuilderAPI_MakeFace(gp_Pln(gp::XOY()), BRepBuilderAPI_MakeWire(BRepBuilderAPI_MakeEdge(circle)));
+  const Region2d polygon = facePolygons(disc, makeSliceFrame({0, 0, 1}), kOutlineDeflection).front();
+  ASSERT_LT(polygon.area(), M_PI - 0.02);
+  EXPECT_TRUE(areaAtLeast(disc, polygon, 1));
+  EXPECT_FALSE(areaAtLeast(disc, polygon, 10));
+  for (int k = -10; k < 10; ++k) {  // bounds 2.5 µm² and more from pi
+    const double least = M_PI + 0.005 * k + 0.0025;
+    EXPECT_EQ(areaAtLeast(disc, polygon, least), M_PI >= least) << least;
+  }
 }
 
 }  // namespace

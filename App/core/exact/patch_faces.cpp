@@ -21,6 +21,7 @@
 #include <gp_Pln.hxx>
 
 #include <algorithm>
+#include <cmath>
 #include <map>
 #include <optional>
 #include <sstream>
@@ -338,11 +339,16 @@ std::vector<PatchFace> exactPatches(const Model& model, const Arrangement& a, co
               frame, p.position, exactDeflection(model.meshDeflection));
         if (slotted.IsNull()) slotted = boolean(faces(section), tools, true);
         std::vector<TopoDS_Shape> kept;
-        for (const TopoDS_Shape& f : faces(slotted))
-          if (area(f) >= crumb) kept.push_back(f);
+        std::vector<Region2d> polygons;  // of the kept faces: their union is the outline
+        for (const TopoDS_Shape& f : faces(slotted)) {
+          Region2d polygon = std::move(facePolygons(f, frame, kOutlineDeflection).front());
+          if (!areaAtLeast(f, polygon, crumb)) continue;
+          kept.push_back(f);
+          polygons.push_back(std::move(polygon));
+        }
         pf.pieces = static_cast<int>(kept.size());
         pf.shape = kept.size() == 1 ? kept.front() : compound(kept);
-        pf.outline = polygoniseFaces(pf.shape, frame, kOutlineDeflection);
+        pf.outline = Region2d::uniteAll(polygons);
         // Faces that overlap (a fuse that did not unify them) are one region to the checks
         // but a cut path each to the cutter: the patch is emitted as its polygon.
         if (pf.outline.components().size() < kept.size())
@@ -353,6 +359,17 @@ std::vector<PatchFace> exactPatches(const Model& model, const Arrangement& a, co
     }
   });
   return out;
+}
+
+bool areaAtLeast(const TopoDS_Shape& face, const Region2d& polygon, double least) {
+  double perimeter = 0;
+  for (const Region2d::Loop& loop : polygon.loops())
+    for (size_t i = 0, j = loop.size() - 1; i < loop.size(); j = i++)
+      perimeter += std::hypot(loop[i].x - loop[j].x, loop[i].y - loop[j].y);
+  const double error = 2 * kOutlineDeflection * perimeter, approximate = polygon.area();
+  if (approximate - error >= least) return true;
+  if (approximate + error < least) return false;
+  return area(face) >= least;
 }
 
 PatchFace polygonPatch(const Arrangement& a, const Realization& r, int k, bool simplify) {

@@ -196,7 +196,7 @@ std::vector<ExactSlice> sliceBatch(const std::vector<Piece>& pieces, const Slice
 
 }  // namespace
 
-Region2d polygoniseFaces(const TopoDS_Shape& faces, const SliceFrame& frame, double deflection) {
+std::vector<Region2d> facePolygons(const TopoDS_Shape& faces, const SliceFrame& frame, double deflection) {
   std::vector<Region2d> pieces;
   for (TopExp_Explorer f(faces, TopAbs_FACE); f.More(); f.Next()) {
     const TopoDS_Face& face = TopoDS::Face(f.Current());
@@ -206,7 +206,11 @@ Region2d polygoniseFaces(const TopoDS_Shape& faces, const SliceFrame& frame, dou
     // A face's holes lie inside its outer wire: even-odd needs no orientation.
     pieces.push_back(Region2d::fromLoops(loops, FillRule::EvenOdd));
   }
-  return Region2d::uniteAll(pieces);
+  return pieces;
+}
+
+Region2d polygoniseFaces(const TopoDS_Shape& faces, const SliceFrame& frame, double deflection) {
+  return Region2d::uniteAll(facePolygons(faces, frame, deflection));
 }
 
 std::vector<ExactSlice> sliceBrep(const TopoDS_Shape& solid, const SliceFrame& frame,

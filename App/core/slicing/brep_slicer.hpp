@@ -50,5 +50,7 @@ std::vector<ExactSlice> sliceBrep(const TopoDS_Shape& solid, const SliceFrame& f
 
 // The outer and hole loops of planar faces, polygonised, in the frame's 2D coordinates.
 Region2d polygoniseFaces(const TopoDS_Shape& faces, const SliceFrame& frame, double deflection);
+// The same, face by face, in the order the faces come: polygoniseFaces unites them.
+std::vector<Region2d> facePolygons(const TopoDS_Shape& faces, const SliceFrame& frame, double deflection);
 
 }  // namespace sliceform
