@@ -42,27 +42,31 @@ FaceInside::FaceInside(const TopoDS_Face& face, const TopoDS_Face& classified) :
 
 FaceInside::~FaceInside() = default;
 
-TopAbs_State FaceInside::classify(const BRepAdaptor_Surface& s, const gp_Pnt& p) const {
-  double u = 0, v = 0;
+bool surfaceParameters(const BRepAdaptor_Surface& s, const gp_Pnt& p, double& u, double& v) {
   switch (s.GetType()) {
     case GeomAbs_Plane:
       ElSLib::Parameters(s.Plane(), p, u, v);
-      break;
+      return true;
     case GeomAbs_Cylinder:
       ElSLib::Parameters(s.Cylinder(), p, u, v);
-      break;
+      return true;
     case GeomAbs_Cone:
       ElSLib::Parameters(s.Cone(), p, u, v);
-      break;
+      return true;
     case GeomAbs_Sphere:
       ElSLib::Parameters(s.Sphere(), p, u, v);
-      break;
+      return true;
     case GeomAbs_Torus:
       torusParameters(s.Torus(), p, u, v);
-      break;
+      return true;
     default:
-      return TopAbs_ON;  // no curves are made on other surfaces
+      return false;
   }
+}
+
+TopAbs_State FaceInside::classify(const BRepAdaptor_Surface& s, const gp_Pnt& p) const {
+  double u = 0, v = 0;
+  if (!surfaceParameters(s, p, u, v)) return TopAbs_ON;  // no curves are made on other surfaces
   if (s.IsUPeriodic()) u = ElCLib::InPeriod(u, uv_[0], uv_[0] + s.UPeriod());
   if (s.IsVPeriodic()) v = ElCLib::InPeriod(v, uv_[2], uv_[2] + s.VPeriod());
   if (polygons_) {

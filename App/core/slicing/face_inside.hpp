@@ -19,6 +19,11 @@ class BRepTopAdaptor_FClass2d;
 
 namespace sliceform {
 
+// The parameters of `p`, a point of `s`, on the surfaces the face-by-face route makes curves
+// on (planes, cylinders, cones, spheres, tori; on a spindle torus the circle past the axis
+// where the point is nearer it); false on a surface of another kind.
+bool surfaceParameters(const BRepAdaptor_Surface& s, const gp_Pnt& p, double& u, double& v);
+
 class FaceInside {
  public:
   // `face`'s parameter box, and `classified`: the face as the classifiers read it (of a

@@ -2,7 +2,6 @@
 #include "slicing/surface_sections.hpp"
 
 #include <ElCLib.hxx>
-#include <ElSLib.hxx>
 #include <GeomAPI_ProjectPointOnCurve.hxx>
 #include <Geom_Circle.hxx>
 #include <Geom_Ellipse.hxx>
@@ -15,6 +14,7 @@
 #include <limits>
 #include <optional>
 
+#include "slicing/face_inside.hpp"
 #include "slicing/torus_section.hpp"
 
 namespace sliceform {
@@ -168,25 +168,7 @@ constexpr double kMinGrazingSine = 1e-3;
 // surfaces planeSurfaceCurves solves; 0 where it has no normal there (an apex, a pole).
 double sineToNormal(const BRepAdaptor_Surface& s, const gp_Pnt& p, const gp_Dir& n) {
   double u = 0, v = 0;
-  switch (s.GetType()) {
-    case GeomAbs_Plane:
-      ElSLib::Parameters(s.Plane(), p, u, v);
-      break;
-    case GeomAbs_Cylinder:
-      ElSLib::Parameters(s.Cylinder(), p, u, v);
-      break;
-    case GeomAbs_Cone:
-      ElSLib::Parameters(s.Cone(), p, u, v);
-      break;
-    case GeomAbs_Sphere:
-      ElSLib::Parameters(s.Sphere(), p, u, v);
-      break;
-    case GeomAbs_Torus:
-      ElSLib::Parameters(s.Torus(), p, u, v);
-      break;
-    default:
-      return 0;
-  }
+  if (!surfaceParameters(s, p, u, v)) return 0;
   gp_Pnt at;
   gp_Vec du, dv;
   s.D1(u, v, at, du, dv);
