@@ -61,6 +61,9 @@ RealizationInput handMade(const std::vector<PatchShape>& patches) {
 // SlotCutter erodes the shape once and takes the grown slots from it, instead of eroding
 // each slotted shape: its piece count must be the one eroding the slotted shape gives, also
 // for bridges of paper around the neck width, under a slot and between a slot and a hole.
+// A bridge of exactly two necks under a square-ended slot leaves the eroded paper touching
+// the grown slot along a line, where either count is right (SlotCutter::openedPieces: a
+// bridge within microns of the neck may count either way): there it is one piece or two.
 TEST(Slots, CutterCountsPiecesAsErodingTheSlottedShape) {
   SlotParams params;  // neck 0.15 mm with no tolerance: bridges under 0.3 mm are cut
   const double neck = 0.15, crumb = 0.5;
@@ -79,7 +82,12 @@ TEST(Slots, CutterCountsPiecesAsErodingTheSlottedShape) {
         const int expected =
             std::max(static_cast<int>(out.components().size()),
                      openedPieceCountFull(out, neck, crumb) - openedPieceCountFull(*shape, neck, crumb) + 1);
-        EXPECT_EQ(pieces, expected) << "bridge " << bridge << (shape == &plain ? "" : " over a hole");
+        if (std::fabs(bridge - 2 * neck) < 1e-6 && shape == &plain && end == SlotEnd::Square) {
+          EXPECT_TRUE(pieces == 1 || pieces == 2) << pieces;
+          EXPECT_EQ(expected, 1);
+        } else {
+          EXPECT_EQ(pieces, expected) << "bridge " << bridge << (shape == &plain ? "" : " over a hole");
+        }
         if (shape == &plain && end == SlotEnd::Square && std::fabs(bridge - 2 * neck) > 0.005)
           EXPECT_EQ(pieces, bridge < 2 * neck ? 2 : 1) << "bridge " << bridge;
       }

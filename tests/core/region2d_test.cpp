@@ -2,6 +2,7 @@
 // Region2d: areas, loop orientation, components, booleans, offsets and line intervals.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 
@@ -386,7 +387,40 @@ TEST(Region2d, RawComponentsAndUnionAtOnce) {
   const std::vector<Region2d> raw = two.subtractComponentsRaw(strip), clean = two.subtractComponents(strip);
   ASSERT_EQ(raw.size(), 2u);
   ASSERT_EQ(clean.size(), 2u);
-  for (size_t i = 0; i < 2; ++i) EXPECT_NEAR(raw[i].area(), clean[i].area(), kTiny);
+  // In whatever order each sweep found them (the raw one's is turned a quarter).
+  std::vector<double> rawAreas, cleanAreas;
+  for (size_t i = 0; i < 2; ++i) rawAreas.push_back(raw[i].area()), cleanAreas.push_back(clean[i].area());
+  std::sort(rawAreas.begin(), rawAreas.end());
+  std::sort(cleanAreas.begin(), cleanAreas.end());
+  for (size_t i = 0; i < 2; ++i) EXPECT_NEAR(rawAreas[i], cleanAreas[i], kTiny);
+}
+
+// The raw pieces are swept turned a quarter (slots along y leave Clipper's active list
+// short) and turned back: the same pieces, where they were, outer loop first and
+// counterclockwise, each hole clockwise.
+TEST(Region2d, RawComponentsLieWhereTheShapeIs) {
+  const Region2d shape = Region2d::fromLoops({rect(1, 2, 21, 9), rect(15, 4, 17, 6)});
+  std::vector<Region2d::Loop> slots;
+  for (int k = 0; k < 4; ++k) slots.push_back(rect(4 + 3 * k, k % 2 ? 5 : 1, 4.5 + 3 * k, k % 2 ? 10 : 6));
+  const Region2d cut = Region2d::fromLoops(slots);
+  const std::vector<Region2d> raw = shape.subtractComponentsRaw(cut), clean = shape.subtractComponents(cut);
+  ASSERT_EQ(raw.size(), clean.size());
+  double total = 0;
+  for (const Region2d& piece : raw) {
+    const Box2 box = piece.bounds();
+    const auto same = std::find_if(clean.begin(), clean.end(), [&](const Region2d& c) {
+      const Box2 b = c.bounds();
+      return std::abs(b.min.x - box.min.x) < kTiny && std::abs(b.min.y - box.min.y) < kTiny &&
+             std::abs(b.max.x - box.max.x) < kTiny && std::abs(b.max.y - box.max.y) < kTiny &&
+             std::abs(c.area() - piece.area()) < kTiny;
+    });
+    EXPECT_NE(same, clean.end());
+    const std::vector<Region2d::Loop> loops = piece.loops();
+    EXPECT_GT(Region2d::signedArea(loops.front()), 0);
+    for (size_t k = 1; k < loops.size(); ++k) EXPECT_LT(Region2d::signedArea(loops[k]), 0);
+    total += piece.area();
+  }
+  EXPECT_NEAR(total, shape.subtract(cut).area(), kTiny);
 }
 
 // A segment away from every edge is decided without a Boolean: it must answer as one would

@@ -70,7 +70,8 @@ class Region2d {
   std::vector<Region2d> subtractComponents(const Region2d& other) const;
   // The same pieces as the tree gives them, outer loop first, not normalised again (no
   // second union, no cleaning): enough to count and measure them, at a fraction of the
-  // time. A piece whose outer loop has under three points is left out.
+  // time. A piece whose outer loop has under three points is left out. Swept turned a
+  // quarter (see the .cpp): the pieces may come in another order than subtractComponents'.
   std::vector<Region2d> subtractComponentsRaw(const Region2d& other) const;
 
   Region2d unite(const Region2d& other) const;
