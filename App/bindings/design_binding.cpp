@@ -297,8 +297,9 @@ void bindDesign(py::module_& m) {
       .def(
           "relaid",
           [](const PyDesign& d, const py::dict& sheetParams) {
-            // Only the sheet changed: the same patches, nested again. The sheet's keys are
-            // read as design() reads them (defaults for any not given).
+            // Only the sheet changed: the same patches, flattened and labelled as they were,
+            // nested again. The sheet's keys are read as design() reads them (defaults for
+            // any not given).
             for (const auto& item : sheetParams) {
               const std::string key = py::str(item.first);
               if (key != "sheet" && key != "margin" && key != "spacing" && key != "rotate")
@@ -310,7 +311,8 @@ void bindDesign(py::module_& m) {
             result->params.sheet = run.params.sheet;
             py::gil_scoped_release release;
             const auto start = std::chrono::steady_clock::now();
-            result->design.layout = layOut(layoutInput(result->design), result->params.sheet);
+            result->design.layout =
+                nestedAgain(layoutInput(result->design), result->design.layout, result->params.sheet);
             for (StageTime& t : result->design.timings)
               if (t.stage == "layout")
                 t.ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)

@@ -324,6 +324,34 @@ TEST(Layout, SameInputSameLayout) {
   }
 }
 
+// A sheet edit nests the patches again and keeps their flattening and labels: the same
+// layout as laying the design out anew on that sheet, and the same error where a patch
+// does not fit it.
+TEST(Layout, NestedAgainIsTheLayoutOnTheOtherSheet) {
+  const SheetSpec card = sheetSpec("130x130", 4, 2);
+  const SheetLayout fresh = layOut(layoutInput(sphere()), card);
+  const SheetLayout again = nestedAgain(layoutInput(sphere()), sphere().layout, card);
+  EXPECT_EQ(again.sheet.name, "130x130");
+  EXPECT_EQ(again.packing.sheets, fresh.packing.sheets);
+  EXPECT_EQ(again.shelf.sheets, fresh.shelf.sheets);
+  ASSERT_EQ(again.packing.placements.size(), fresh.packing.placements.size());
+  ASSERT_EQ(again.patches.size(), fresh.patches.size());
+  for (size_t k = 0; k < fresh.patches.size(); ++k) {
+    const Placement &a = again.packing.placements[k], &b = fresh.packing.placements[k];
+    EXPECT_EQ(a.sheet, b.sheet);
+    EXPECT_EQ(a.offset.x, b.offset.x);
+    EXPECT_EQ(a.offset.y, b.offset.y);
+    EXPECT_EQ(a.rotation, b.rotation);
+    EXPECT_EQ(again.patches[k].id, fresh.patches[k].id);
+    EXPECT_EQ(again.patches[k].name.at.x, fresh.patches[k].name.at.x);
+    ASSERT_EQ(again.patches[k].partners.size(), fresh.patches[k].partners.size());
+    for (size_t i = 0; i < fresh.patches[k].partners.size(); ++i)
+      EXPECT_EQ(again.patches[k].partners[i].at.y, fresh.patches[k].partners[i].at.y);
+  }
+  expectNoOverlaps(again);
+  EXPECT_THROW(nestedAgain(layoutInput(sphere()), sphere().layout, sheetSpec("100x100", 10, 3)), Error);
+}
+
 TEST(Layout, PatchLargerThanTheSheetIsAClearError) {
   try {
     layOut(layoutInput(sphere()), sheetSpec("100x100", 10, 3));

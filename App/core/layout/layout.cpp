@@ -38,17 +38,27 @@ Label upright(const Label& l, const Placement& at) {
   return u;
 }
 
+// What nesting reads of the patches: their outlines and ids.
+struct Nestable {
+  std::vector<Region2d> outlines;
+  std::vector<std::string> names;
+};
+
+Nestable nestable(const LayoutInput& input) {
+  Nestable n;
+  for (size_t k = 0; k < input.patches.size(); ++k) {
+    n.outlines.push_back(input.patches[k].outline);
+    n.names.push_back(patchId(input.arrangement.scaffold, static_cast<int>(k)));
+  }
+  return n;
+}
+
 }  // namespace
 
 SheetLayout layOut(const LayoutInput& input, const SheetSpec& sheet) {
   SheetLayout layout;
   layout.sheet = sheet;
-  std::vector<Region2d> outlines;
-  std::vector<std::string> names;
-  for (size_t k = 0; k < input.patches.size(); ++k) {
-    outlines.push_back(input.patches[k].outline);
-    names.push_back(patchId(input.arrangement.scaffold, static_cast<int>(k)));
-  }
+  const Nestable n = nestable(input);
   // Nesting reads only the outlines, not the labels: it is one more task beside the
   // patches, handed out first (it takes longest), so one core nests while the others
   // flatten and label the patches. Every task writes its own slot: the result does not
@@ -61,13 +71,23 @@ SheetLayout layOut(const LayoutInput& input, const SheetSpec& sheet) {
       return;
     }
     try {
-      layout.packing = nestOnSheets(outlines, names, sheet);
+      layout.packing = nestOnSheets(n.outlines, n.names, sheet);
     } catch (...) {
       nestFailure = std::current_exception();
     }
   });
   if (nestFailure) std::rethrow_exception(nestFailure);
-  layout.shelf = shelfPack(outlines, names, sheet);
+  layout.shelf = shelfPack(n.outlines, n.names, sheet);
+  return layout;
+}
+
+SheetLayout nestedAgain(const LayoutInput& input, const SheetLayout& laid, const SheetSpec& sheet) {
+  SheetLayout layout;
+  layout.sheet = sheet;
+  const Nestable n = nestable(input);
+  layout.packing = nestOnSheets(n.outlines, n.names, sheet);
+  layout.shelf = shelfPack(n.outlines, n.names, sheet);
+  layout.patches = laid.patches;
   return layout;
 }
 

@@ -18,6 +18,9 @@ struct SheetLayout {
 };
 
 SheetLayout layOut(const LayoutInput& input, const SheetSpec& sheet);
+// `laid` (layOut of the same input) nested again on `sheet`: a patch's flattening and labels
+// read nothing of the sheet, so a sheet, margin, spacing or turning edit only nests again.
+SheetLayout nestedAgain(const LayoutInput& input, const SheetLayout& laid, const SheetSpec& sheet);
 
 // Everything drawn on one sheet, in sheet coordinates (mm, origin bottom-left, y up).
 struct SheetDrawing {
