@@ -83,6 +83,7 @@ def bench(source_edits, directions, clock):
                   "Clearance": (sliceform, [0.11 + 0.01 * k for k in range(repeat)]),
                   "Slices": (sliceform, [sliceform.Slices + 1 + k for k in range(repeat)]),
                   "Margin": (sliceform, [10.5 + 0.5 * k for k in range(repeat)]),
+                  "Kerf": (sliceform, [0.05 + 0.01 * k for k in range(repeat)]),
                   "FoldAngle": (sliceform, [60.0 + 5 * k for k in range(repeat)])}, **edits)
     for prop, (obj, values) in edits.items():
         runs = []

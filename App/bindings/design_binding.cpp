@@ -21,6 +21,7 @@
 #include "pipeline/design.hpp"
 #include "pipeline/directions.hpp"
 #include "pipeline/parameter_schema.hpp"
+#include "realization/slots.hpp"
 #include "support/error.hpp"
 
 namespace py = pybind11;
@@ -296,32 +297,35 @@ void bindDesign(py::module_& m) {
            "and engraved strokes in sheet coordinates")
       .def(
           "relaid",
-          [](const PyDesign& d, const py::dict& sheetParams) {
-            // Only the sheet changed: the same patches, flattened and labelled as they were,
-            // nested again. The sheet's keys are read as design() reads them (defaults for
-            // any not given).
-            for (const auto& item : sheetParams) {
+          [](const PyDesign& d, const py::dict& layoutParams) {
+            // Only the sheet or the kerf changed: the same patches, flattened and labelled as
+            // they were, nested again or their cut paths drawn again (laidOutAgain). The keys
+            // are read as design() reads them (defaults for any not given).
+            for (const auto& item : layoutParams) {
               const std::string key = py::str(item.first);
-              if (key != "sheet" && key != "margin" && key != "spacing" && key != "rotate")
+              if (key != "sheet" && key != "margin" && key != "spacing" && key != "rotate" && key != "kerf")
                 throw Error(ErrorKind::BadParameter,
-                            "relaid() takes the sheet's parameters only, not " + key);
+                            "relaid() takes the sheet's parameters and the kerf only, not " + key);
             }
-            const Run run = readParams(sheetParams);
+            const Run run = readParams(layoutParams);
             auto result = std::make_shared<PyDesign>(d);
             result->params.sheet = run.params.sheet;
+            result->params.slots.kerf = run.params.slots.kerf;
+            checkSlotParams(result->params.slots);
+            result->design.realization.params.kerf = run.params.slots.kerf;
             py::gil_scoped_release release;
             const auto start = std::chrono::steady_clock::now();
             result->design.layout =
-                nestedAgain(layoutInput(result->design), result->design.layout, result->params.sheet);
+                laidOutAgain(layoutInput(result->design), result->design.layout, result->params.sheet);
             for (StageTime& t : result->design.timings)
               if (t.stage == "layout")
                 t.ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
                            .count();
             return result;
           },
-          py::arg("sheet_params"),
-          "The same design laid out on other sheets: `sheet_params` holds sheet, margin, spacing and "
-          "rotate as design() takes them (a sheet or margin edit needs no new design)")
+          py::arg("layout_params"),
+          "The same design laid out again: `layout_params` holds sheet, margin, spacing, rotate and "
+          "kerf as design() takes them (a sheet, margin or kerf edit needs no new design)")
       .def(
           "redesigned",
           [](const PyDesign& d, const py::dict& params, const py::object& progress) {

@@ -157,8 +157,9 @@ def restore_traceback():
         del _saved_limit[:]
 
 
-# The design's parameters that only the layout reads.
-SHEET_KEYS = ("sheet", "margin", "spacing", "rotate")
+# The design's parameters that only the layout reads: the sheet, and the kerf, which moves
+# only the cut paths (Design.relaid).
+LAYOUT_KEYS = ("sheet", "margin", "spacing", "rotate", "kerf")
 
 
 def _source_key(source):
@@ -283,15 +284,15 @@ class Sliceform:
 
     def _made_again(self, source, params, source_key, key, progress):
         """The design for these inputs from one in memory of the same source: laid out again
-        if only the sheet differs (a sheet, margin or spacing edit needs no new design),
-        else designed again with the stages whose inputs did not change taken from it
-        (Design.redesigned); designed anew if none has this source."""
-        unlaid = _key(source_key, {k: v for k, v in params.items() if k not in SHEET_KEYS})
+        if only the sheet or the kerf differs (a sheet, margin, spacing or kerf edit needs no
+        new design), else designed again with the stages whose inputs did not change taken
+        from it (Design.redesigned); designed anew if none has this source."""
+        unlaid = _key(source_key, {k: v for k, v in params.items() if k not in LAYOUT_KEYS})
         self.unlaid[key], self.sources[key] = unlaid, source_key
         same_source = None
         for other, entry in self.designs.items():
             if self.unlaid.get(other) == unlaid:
-                return entry[0].relaid({k: params[k] for k in SHEET_KEYS if k in params})
+                return entry[0].relaid({k: params[k] for k in LAYOUT_KEYS if k in params})
             if self.sources.get(other) == source_key:
                 same_source = entry[0]
         if same_source is not None:

@@ -324,15 +324,15 @@ TEST(Layout, SameInputSameLayout) {
   }
 }
 
-// A sheet edit nests the patches again and keeps their flattening and labels: the same
-// layout as laying the design out anew on that sheet, and the same error where a patch
-// does not fit it.
-TEST(Layout, NestedAgainIsTheLayoutOnTheOtherSheet) {
+// Laid out again, as layOut lays the design out anew: a sheet edit nests the patches again
+// and keeps their flattening and labels; the same error where a patch does not fit.
+TEST(Layout, LaidOutAgainOnAnotherSheetIsTheLayoutThere) {
   const SheetSpec card = sheetSpec("130x130", 4, 2);
   const SheetLayout fresh = layOut(layoutInput(sphere()), card);
-  const SheetLayout again = nestedAgain(layoutInput(sphere()), sphere().layout, card);
+  const SheetLayout again = laidOutAgain(layoutInput(sphere()), sphere().layout, card);
   EXPECT_EQ(again.sheet.name, "130x130");
   EXPECT_EQ(again.packing.sheets, fresh.packing.sheets);
+  EXPECT_GT(again.packing.sheets, sphere().layout.packing.sheets);
   EXPECT_EQ(again.shelf.sheets, fresh.shelf.sheets);
   ASSERT_EQ(again.packing.placements.size(), fresh.packing.placements.size());
   ASSERT_EQ(again.patches.size(), fresh.patches.size());
@@ -349,7 +349,42 @@ TEST(Layout, NestedAgainIsTheLayoutOnTheOtherSheet) {
       EXPECT_EQ(again.patches[k].partners[i].at.y, fresh.patches[k].partners[i].at.y);
   }
   expectNoOverlaps(again);
-  EXPECT_THROW(nestedAgain(layoutInput(sphere()), sphere().layout, sheetSpec("100x100", 10, 3)), Error);
+  EXPECT_THROW(laidOutAgain(layoutInput(sphere()), sphere().layout, sheetSpec("100x100", 10, 3)), Error);
+}
+
+// A kerf edit moves the cut paths and nothing else: the layout of the design with another
+// kerf, its cut paths drawn again, is the one layOut makes of it.
+TEST(Layout, LaidOutAgainWithAnotherKerfDrawsTheCutPathsAgain) {
+  Design kerfed = sphere();
+  kerfed.realization.params.kerf = 0.2;
+  const SheetLayout fresh = layOut(layoutInput(kerfed), sphere().layout.sheet);
+  const SheetLayout again = laidOutAgain(layoutInput(kerfed), sphere().layout, sphere().layout.sheet);
+  EXPECT_EQ(again.kerf, 0.2);
+  EXPECT_EQ(again.packing.sheets, fresh.packing.sheets);
+  ASSERT_EQ(again.patches.size(), fresh.patches.size());
+  for (size_t k = 0; k < fresh.patches.size(); ++k) {
+    EXPECT_EQ(again.packing.placements[k].offset.x, fresh.packing.placements[k].offset.x);
+    EXPECT_EQ(again.patches[k].name.at.x, fresh.patches[k].name.at.x);
+    const std::vector<CutLoop>&a = again.patches[k].cut, &b = fresh.patches[k].cut,
+          &before = sphere().layout.patches[k].cut;
+    ASSERT_EQ(a.size(), b.size());
+    for (size_t i = 0; i < b.size(); ++i) {
+      ASSERT_EQ(a[i].size(), b[i].size());
+      for (size_t e = 0; e < b[i].size(); ++e) {
+        EXPECT_EQ(a[i][e].a.x, b[i][e].a.x);
+        EXPECT_EQ(a[i][e].a.y, b[i][e].a.y);
+      }
+    }
+    // Moved out by half the kerf: the outer loop's box grows by 0.1 mm a side.
+    const auto width = [](const std::vector<CutLoop>& loops) {
+      double lo = HUGE_VAL, hi = -HUGE_VAL;
+      for (const CutLoop& loop : loops)
+        for (const CutElement& e : loop)
+          for (const Vec2& p : sample(e, 0.001)) lo = std::min(lo, p.x), hi = std::max(hi, p.x);
+      return hi - lo;
+    };
+    EXPECT_NEAR(width(a), width(before) + 0.2, 0.02) << again.patches[k].id;
+  }
 }
 
 TEST(Layout, PatchLargerThanTheSheetIsAClearError) {

@@ -187,7 +187,8 @@ class TestSliceformFeature(unittest.TestCase):
 
     def test_sheet_edit_lays_out_the_same_design_again(self):
         """A sheet, margin or spacing edit reuses the design in memory and only nests it again
-        (issue 17); the result is what a fresh design on that sheet gives. A Thickness edit
+        (issue 17); the result is what a fresh design on that sheet gives. A Kerf edit only
+        draws the cut paths again, as a fresh design with that kerf draws them. A Thickness edit
         designs again from the design in memory (its slices, Reeb graphs and cylinders), and
         gives what a fresh design gives; a source edit designs anew."""
         import sliceform_native
@@ -220,6 +221,23 @@ class TestSliceformFeature(unittest.TestCase):
             self.assertEqual(params["thickness"], 0.5)
             again = json.loads(sliceform.Proxy.report_json(sliceform))
             self.assertEqual(again, json.loads(design(source, params).report_json()))
+            # A Kerf edit moves only the cut paths: laid out again, not designed again.
+            native_design = type(sliceform.Proxy.ensure_design(sliceform))
+            redesigned = native_design.redesigned
+            native_design.redesigned = lambda *a, **k: calls.append(a) or redesigned(*a, **k)
+            try:
+                self.edit("Edit Kerf", lambda: setattr(sliceform, "Kerf", 0.15))
+            finally:
+                native_design.redesigned = redesigned
+            self.assertEqual(calls, [])
+            self.assertTrue(sliceform.isValid(), sliceform.getStatusString())
+            source, params = sliceform.Proxy._inputs(sliceform)[:2]
+            self.assertEqual(params["kerf"], 0.15)
+            kerfed = design(source, params)
+            self.assertEqual(json.loads(sliceform.Proxy.report_json(sliceform)), json.loads(kerfed.report_json()))
+            cuts = [p["loops"] for p in sliceform.Proxy.ensure_design(sliceform).flat_patches()]
+            self.assertEqual(cuts, [p["loops"] for p in kerfed.flat_patches()])
+            self.assertNotEqual(cuts, [p["loops"] for p in design(source, dict(params, kerf=0)).flat_patches()])
             self.edit("Edit Length", lambda: setattr(box, "Length", 110))
             self.assertEqual(len(calls), 1)
         finally:

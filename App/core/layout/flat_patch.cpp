@@ -156,16 +156,20 @@ std::vector<Vec2> sample(const CutElement& e, double deflection) {
   return points;
 }
 
+std::vector<CutLoop> cutPaths(const LayoutInput& d, int k) {
+  const PatchPlane plane = patchPlane(d.arrangement, k);
+  return cutLoops(kerfCompensated(d.patches[k].shape, d.realization.params.kerf),
+                  PlaneMap{plane.xAxis, plane.yAxis});
+}
+
 FlatPatch flattenPatch(const LayoutInput& d, int k) {
   const Arrangement& a = d.arrangement;
-  const PatchPlane plane = patchPlane(a, k);
   FlatPatch flat;
   flat.patch = k;
   flat.id = patchId(a.scaffold, k);
   flat.family = a.scaffold.patches[k].family;
   flat.outline = d.patches[k].outline;
-  flat.cut = cutLoops(kerfCompensated(d.patches[k].shape, d.realization.params.kerf),
-                      PlaneMap{plane.xAxis, plane.yAxis});
+  flat.cut = cutPaths(d, k);
   const LabelPaper paper = labelPaper(flat.outline);
   const std::vector<int>& order = d.realization.assemblyOrder;
   const auto at = std::find(order.begin(), order.end(), k);

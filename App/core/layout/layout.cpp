@@ -58,6 +58,7 @@ Nestable nestable(const LayoutInput& input) {
 SheetLayout layOut(const LayoutInput& input, const SheetSpec& sheet) {
   SheetLayout layout;
   layout.sheet = sheet;
+  layout.kerf = input.realization.params.kerf;
   const Nestable n = nestable(input);
   // Nesting reads only the outlines, not the labels: it is one more task beside the
   // patches, handed out first (it takes longest), so one core nests while the others
@@ -81,13 +82,21 @@ SheetLayout layOut(const LayoutInput& input, const SheetSpec& sheet) {
   return layout;
 }
 
-SheetLayout nestedAgain(const LayoutInput& input, const SheetLayout& laid, const SheetSpec& sheet) {
-  SheetLayout layout;
-  layout.sheet = sheet;
-  const Nestable n = nestable(input);
-  layout.packing = nestOnSheets(n.outlines, n.names, sheet);
-  layout.shelf = shelfPack(n.outlines, n.names, sheet);
-  layout.patches = laid.patches;
+SheetLayout laidOutAgain(const LayoutInput& input, const SheetLayout& laid, const SheetSpec& sheet) {
+  SheetLayout layout = laid;
+  const SheetSpec& was = laid.sheet;
+  if (sheet.name != was.name || sheet.width != was.width || sheet.height != was.height ||
+      sheet.margin != was.margin || sheet.spacing != was.spacing || sheet.rotate != was.rotate) {
+    const Nestable n = nestable(input);
+    layout.sheet = sheet;
+    layout.packing = nestOnSheets(n.outlines, n.names, sheet);
+    layout.shelf = shelfPack(n.outlines, n.names, sheet);
+  }
+  if (input.realization.params.kerf != laid.kerf) {
+    layout.kerf = input.realization.params.kerf;
+    parallelFor(layout.patches.size(),
+                [&](size_t k) { layout.patches[k].cut = cutPaths(input, layout.patches[k].patch); });
+  }
   return layout;
 }
 

@@ -12,15 +12,18 @@ namespace sliceform {
 
 struct SheetLayout {
   SheetSpec sheet;
+  double kerf = 0;                 // mm the cut paths were moved out by, in all (SlotParams::kerf)
   std::vector<FlatPatch> patches;  // in patch order
   Packing packing;                 // libnest2d
   Packing shelf;                   // the paper's shelf layout, for comparison only
 };
 
 SheetLayout layOut(const LayoutInput& input, const SheetSpec& sheet);
-// `laid` (layOut of the same input) nested again on `sheet`: a patch's flattening and labels
-// read nothing of the sheet, so a sheet, margin, spacing or turning edit only nests again.
-SheetLayout nestedAgain(const LayoutInput& input, const SheetLayout& laid, const SheetSpec& sheet);
+// `laid` (layOut of the same input, but for the kerf) laid out on `sheet`, as layOut would:
+// a patch's flattening and labels read nothing of the sheet, and the kerf moves only the cut
+// paths (nesting and labels read the paper). So a sheet, margin, spacing or turning edit
+// only nests again, and a kerf edit only draws the cut paths again.
+SheetLayout laidOutAgain(const LayoutInput& input, const SheetLayout& laid, const SheetSpec& sheet);
 
 // Everything drawn on one sheet, in sheet coordinates (mm, origin bottom-left, y up).
 struct SheetDrawing {
