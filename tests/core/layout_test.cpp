@@ -4,6 +4,10 @@
 // from run to run.
 #include <gtest/gtest.h>
 
+#include <BRepAdaptor_Curve.hxx>
+#include <TopExp_Explorer.hxx>
+#include <TopoDS.hxx>
+
 #include <algorithm>
 #include <cmath>
 #include <fstream>
@@ -385,6 +389,39 @@ TEST(Layout, LaidOutAgainWithAnotherKerfDrawsTheCutPathsAgain) {
     };
     EXPECT_NEAR(width(a), width(before) + 0.2, 0.02) << again.patches[k].id;
   }
+}
+
+// The kerf's path keeps half the kerf off the paper everywhere and follows it closely (the
+// beam, as wide as the kerf, cuts the paper as designed); a corner it turns less than 120°
+// goes straight on (a mitre) rather than round an arc of half the kerf, as OCCT's offset
+// draws it (the 90° corners of the slots' mouths).
+TEST(Layout, KerfPathsKeepHalfTheKerfOffThePaperAndMitreTheirCorners) {
+  Design kerfed = sphere();
+  const double r = 0.1;
+  kerfed.realization.params.kerf = 2 * r;
+  const SheetLayout l = layOut(layoutInput(kerfed), sphere().layout.sheet);
+  int corners = 0, rounded = 0;
+  for (const FlatPatch& p : l.patches) {
+    const Region2d clear = p.outline.offset(r - 0.002), near = p.outline.offset(2 * r + 0.002);
+    for (const CutLoop& loop : p.cut)
+      for (const CutElement& e : loop) {
+        for (const Vec2& q : sample(e, 0.001)) {
+          EXPECT_FALSE(clear.contains(q)) << p.id << ": the path comes nearer the paper than half the kerf";
+          EXPECT_TRUE(near.contains(q)) << p.id << ": the path strays from the paper";
+        }
+        if (e.kind == CutElement::Kind::Arc && std::abs(e.radius - r) < 1e-9) {
+          const double sweep = std::fmod((e.ccw ? e.end - e.start : e.start - e.end) + 4 * M_PI, 2 * M_PI);
+          EXPECT_GE(sweep, 120 * M_PI / 180 - 1e-9) << p.id << ": a corner arc turning less than 120°";
+          ++corners;
+        }
+      }
+    for (TopExp_Explorer it(kerfCompensated(kerfed.patches[p.patch].shape, 2 * r), TopAbs_EDGE); it.More();
+         it.Next()) {
+      const BRepAdaptor_Curve c(TopoDS::Edge(it.Current()));
+      rounded += c.GetType() == GeomAbs_Circle && std::abs(c.Circle().Radius() - r) < 1e-9;
+    }
+  }
+  EXPECT_LT(corners * 3, rounded) << "of OCCT's " << rounded << " corner arcs, " << corners << " are left";
 }
 
 TEST(Layout, PatchLargerThanTheSheetIsAClearError) {
