@@ -408,6 +408,14 @@ Region2d Region2d::offset(double deltaMm, double arcToleranceMm) const {
   return r;
 }
 
+Region2d Region2d::mitredOffset(double deltaMm, double mitreLimit) const {
+  ClipperLib::ClipperOffset offsetter(mitreLimit);
+  offsetter.AddPaths(paths_, ClipperLib::jtMiter, ClipperLib::etClosedPolygon);
+  Region2d r;
+  offsetter.Execute(r.paths_, deltaMm * kUnitsPerMm);
+  return r;
+}
+
 Region2d Region2d::grownSquareOff(double deltaMm, const Region2d& other, double arcToleranceMm) const {
   Region2d grown = offset(deltaMm, arcToleranceMm);
   if (!(deltaMm > 0) || paths_.size() != 1 || paths_[0].size() != 4 || grown.paths_.size() != 1) return grown;

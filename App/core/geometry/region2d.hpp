@@ -82,6 +82,10 @@ class Region2d {
   // size).
   static constexpr double kArcToleranceMm = 0.001;
   Region2d offset(double deltaMm, double arcToleranceMm = kArcToleranceMm) const;
+  // Grown by deltaMm > 0 with mitred corners: a corner's two sides go on to where they meet
+  // while that is at most `mitreLimit` times deltaMm from the corner, and are cut square
+  // (tangent to the round corner) where it is further.
+  Region2d mitredOffset(double deltaMm, double mitreLimit) const;
   // A region of one axis-aligned rectangle (a slot) grown by deltaMm: square corners
   // wherever the square a corner then adds misses `other` (the two differ only outside
   // `other`, so `other` less either is the same region, and a square corner is one vertex

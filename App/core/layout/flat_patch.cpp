@@ -15,6 +15,7 @@
 
 #include "layout/labels.hpp"
 #include "slicing/edge_samples.hpp"
+#include "support/error.hpp"
 #include "support/occt_guard.hpp"
 #include "support/parallel.hpp"
 #include "support/per_family.hpp"
@@ -285,11 +286,29 @@ std::vector<Vec2> sample(const CutElement& e, double deflection) {
 
 std::vector<CutLoop> cutPaths(const LayoutInput& d, int k) {
   const PatchPlane plane = patchPlane(d.arrangement, k);
+  const PlaneMap to2d{plane.xAxis, plane.yAxis};
   const double kerf = d.realization.params.kerf;
-  std::vector<CutLoop> loops =
-      cutLoops(kerfCompensated(d.patches[k].shape, kerf), PlaneMap{plane.xAxis, plane.yAxis});
-  if (kerf > 0)
-    for (CutLoop& loop : loops) loop = mitred(loop, kerf / 2, d.patches[k].outline);
+  if (kerf <= 0) return cutLoops(d.patches[k].shape, to2d);
+  std::vector<CutLoop> loops;
+  try {
+    loops = cutLoops(kerfCompensated(d.patches[k].shape, kerf), to2d);
+  } catch (const Error& e) {
+    if (e.kind() != ErrorKind::Geometry) throw;
+    // OCCT's offset fails on some exact faces (at 0.15 mm, a patch or more of occt-misc's
+    // Axis_of_bearing, Ball, Bottom, Motor-c and Top: a wire it finds open, or no result;
+    // the design was refused). The paper's polygon, within kOutlineDeflection of the face,
+    // is moved out instead, its corners mitred as below and cut square (tangent to the
+    // round corner) where sharper.
+    for (const Region2d::Loop& polygon :
+         d.patches[k].outline.mitredOffset(kerf / 2, 1 / std::cos(kMitredTurn / 2)).loops()) {
+      CutLoop loop;
+      for (size_t i = 0; i < polygon.size(); ++i)
+        loop.push_back(line(polygon[i], polygon[(i + 1) % polygon.size()]));
+      loops.push_back(std::move(loop));
+    }
+    return loops;
+  }
+  for (CutLoop& loop : loops) loop = mitred(loop, kerf / 2, d.patches[k].outline);
   return loops;
 }
 
