@@ -425,6 +425,40 @@ TEST(Layout, KerfPathsKeepHalfTheKerfOffThePaperAndMitreTheirCorners) {
   EXPECT_LT(corners * 3, rounded) << "of OCCT's " << rounded << " corner arcs, " << corners << " are left";
 }
 
+// A mesh's patches are polygons: their kerf paths are the polygons moved out, keeping half
+// the kerf off the paper, every corner that turns less than 120° mitred, none rounded.
+TEST(Layout, KerfPathsOfAMeshAreItsPolygonsMovedOut) {
+  DesignParams params;
+  params.arrangement.slices = 32;
+  const double r = 0.1;
+  params.slots.kerf = 2 * r;
+  const Model sphereMesh = modelFromMesh(modelFromShape(test::makeSphere(60), "sphere").mesh, "sphere mesh");
+  const Design d = runDesign(sphereMesh, params);
+  int mitres = 0;
+  for (const FlatPatch& p : d.layout.patches) {
+    EXPECT_FALSE(d.patches[p.patch].exact);
+    const Region2d clear = p.outline.offset(r - 0.002), near = p.outline.offset(2 * r + 0.002);
+    for (const CutLoop& loop : p.cut) {
+      for (size_t i = 0; i < loop.size(); ++i) {
+        const CutElement &e = loop[i], &next = loop[(i + 1) % loop.size()];
+        ASSERT_EQ(e.kind, CutElement::Kind::Line) << p.id;
+        EXPECT_NEAR(e.b.x, next.a.x, 1e-9);
+        EXPECT_NEAR(e.b.y, next.a.y, 1e-9);
+        for (const Vec2& q : {e.a, Vec2{(e.a.x + e.b.x) / 2, (e.a.y + e.b.y) / 2}}) {
+          EXPECT_FALSE(clear.contains(q)) << p.id << ": the path comes nearer the paper than half the kerf";
+          EXPECT_TRUE(near.contains(q)) << p.id << ": the path strays from the paper";
+        }
+      }
+      mitres += static_cast<int>(loop.size());
+    }
+  }
+  // One element a polygon's vertex: no arcs, nor the extra vertex a round corner adds.
+  int vertices = 0;
+  for (const FlatPatch& p : d.layout.patches)
+    for (const Region2d::Loop& loop : p.outline.loops()) vertices += static_cast<int>(loop.size());
+  EXPECT_LE(mitres, vertices * 11 / 10);
+}
+
 // Where OCCT's offset fails on an exact face (occt-misc Axis_of_bearing.brep: one patch of
 // 21 at 0.15 mm), the kerf's path comes from the paper's polygon, and keeps half the kerf
 // off the paper as the others do: the design is laid out, not refused.
