@@ -185,7 +185,7 @@ std::optional<Vec2> mitre(const CutElement& before, const CutElement& arc, const
   return m;
 }
 
-// `e` with its end at `at` moved to `p` (`start`: its start), an arc's angle with it.
+// `e` with one end moved to `p` (`start`: its start, else its end), an arc's angle with it.
 void moveEnd(CutElement& e, bool start, Vec2 p) {
   (start ? e.a : e.b) = p;
   if (e.kind == CutElement::Kind::Arc)

@@ -12,7 +12,7 @@ namespace sliceform {
 
 struct SheetLayout {
   SheetSpec sheet;
-  double kerf = 0;                 // mm the cut paths were moved out by, in all (SlotParams::kerf)
+  double kerf = 0;                 // the kerf the cut paths are drawn for (half of it off the paper)
   std::vector<FlatPatch> patches;  // in patch order
   Packing packing;                 // libnest2d
   Packing shelf;                   // the paper's shelf layout, for comparison only
