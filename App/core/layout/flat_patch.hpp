@@ -79,9 +79,9 @@ struct FlatPatch {
 // kerf moves the cut paths as SlotParams::kerf says (outline and labels stay the paper's).
 // Patches are independent of each other.
 FlatPatch flattenPatch(const LayoutInput& input, int patch);
-// Its cut paths alone (FlatPatch::cut), the kerf applied.
-std::vector<CutLoop> cutPaths(const LayoutInput& input, int patch);
 
+// An arc's sweep, radians, in (0, 2 pi) the way it turns.
+double sweepOf(const CutElement& e);
 // A point of a cut element at parameter t in [0, 1] (used for sampling and bounds).
 Vec2 pointAt(const CutElement& e, double t);
 // The element sampled within `deflection` mm, its first point included, its last not.

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <exception>
 
+#include "layout/cut_paths.hpp"
 #include "layout/labels.hpp"
 #include "support/parallel.hpp"
 
