@@ -392,6 +392,18 @@ TEST(Layout, LaidOutAgainWithAnotherKerfDrawsTheCutPathsAgain) {
   }
 }
 
+// Where a kerf path of half-kerf `r` may lie about `paper`: no nearer than r, no further
+// than 2r (a mitre at 120°), each within `slack`.
+struct KerfBand {
+  Region2d clear, near;
+  KerfBand(const Region2d& paper, double r, double slack)
+      : clear(paper.offset(r - slack)), near(paper.offset(2 * r + slack)) {}
+  void expectHolds(Vec2 q, const std::string& id) const {
+    EXPECT_FALSE(clear.contains(q)) << id << ": the path comes nearer the paper than half the kerf";
+    EXPECT_TRUE(near.contains(q)) << id << ": the path strays from the paper";
+  }
+};
+
 // The kerf's path keeps half the kerf off the paper everywhere and follows it closely (the
 // beam, as wide as the kerf, cuts the paper as designed); a corner it turns less than 120°
 // goes straight on (a mitre) rather than round an arc of half the kerf, as OCCT's offset
@@ -403,13 +415,10 @@ TEST(Layout, KerfPathsKeepHalfTheKerfOffThePaperAndMitreTheirCorners) {
   const SheetLayout l = layOut(layoutInput(kerfed), sphere().layout.sheet);
   int corners = 0, rounded = 0;
   for (const FlatPatch& p : l.patches) {
-    const Region2d clear = p.outline.offset(r - 0.002), near = p.outline.offset(2 * r + 0.002);
+    const KerfBand band(p.outline, r, 0.002);
     for (const CutLoop& loop : p.cut)
       for (const CutElement& e : loop) {
-        for (const Vec2& q : sample(e, 0.001)) {
-          EXPECT_FALSE(clear.contains(q)) << p.id << ": the path comes nearer the paper than half the kerf";
-          EXPECT_TRUE(near.contains(q)) << p.id << ": the path strays from the paper";
-        }
+        for (const Vec2& q : sample(e, 0.001)) band.expectHolds(q, p.id);
         if (e.kind == CutElement::Kind::Arc && std::abs(e.radius - r) < 1e-9) {
           const double sweep = std::fmod((e.ccw ? e.end - e.start : e.start - e.end) + 4 * M_PI, 2 * M_PI);
           EXPECT_GE(sweep, 120 * M_PI / 180 - 1e-9) << p.id << ": a corner arc turning less than 120°";
@@ -437,17 +446,14 @@ TEST(Layout, KerfPathsOfAMeshAreItsPolygonsMovedOut) {
   int mitres = 0;
   for (const FlatPatch& p : d.layout.patches) {
     EXPECT_FALSE(d.patches[p.patch].exact);
-    const Region2d clear = p.outline.offset(r - 0.002), near = p.outline.offset(2 * r + 0.002);
+    const KerfBand band(p.outline, r, 0.002);
     for (const CutLoop& loop : p.cut) {
       for (size_t i = 0; i < loop.size(); ++i) {
         const CutElement &e = loop[i], &next = loop[(i + 1) % loop.size()];
         ASSERT_EQ(e.kind, CutElement::Kind::Line) << p.id;
         EXPECT_NEAR(e.b.x, next.a.x, 1e-9);
         EXPECT_NEAR(e.b.y, next.a.y, 1e-9);
-        for (const Vec2& q : {e.a, Vec2{(e.a.x + e.b.x) / 2, (e.a.y + e.b.y) / 2}}) {
-          EXPECT_FALSE(clear.contains(q)) << p.id << ": the path comes nearer the paper than half the kerf";
-          EXPECT_TRUE(near.contains(q)) << p.id << ": the path strays from the paper";
-        }
+        for (const Vec2& q : {e.a, Vec2{(e.a.x + e.b.x) / 2, (e.a.y + e.b.y) / 2}}) band.expectHolds(q, p.id);
       }
       mitres += static_cast<int>(loop.size());
     }
@@ -476,15 +482,11 @@ TEST(Layout, KerfPathsWhereOcctsOffsetFailsComeFromThePaperPolygon) {
       ++failing;
     }
     // The outline is the exact face's polygon, within kOutlineDeflection of it.
-    const double slack = kOutlineDeflection + 0.002;
-    const Region2d clear = p.outline.offset(r - slack), near = p.outline.offset(2 * r + slack);
+    const KerfBand band(p.outline, r, kOutlineDeflection + 0.002);
     ASSERT_FALSE(p.cut.empty()) << p.id;
     for (const CutLoop& loop : p.cut)
       for (const CutElement& e : loop)
-        for (const Vec2& q : sample(e, 0.001)) {
-          EXPECT_FALSE(clear.contains(q)) << p.id << ": the path comes nearer the paper than half the kerf";
-          EXPECT_TRUE(near.contains(q)) << p.id << ": the path strays from the paper";
-        }
+        for (const Vec2& q : sample(e, 0.001)) band.expectHolds(q, p.id);
   }
   EXPECT_GT(failing, 0) << "no patch left to the polygon: the test no longer tests it";
 }

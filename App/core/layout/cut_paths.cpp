@@ -108,6 +108,11 @@ std::vector<CutLoop> cutLoops(const TopoDS_Shape& shape, const PlaneMap& to2d) {
 // Margin edit: 0.75 s at no kerf, 3.97 s at 0.1 mm).
 constexpr double kMitredTurn = 120 * M_PI / 180;
 
+// Whether `e` is a corner arc of the kerf's offset: an arc of half the kerf, `radius`.
+bool cornerArc(const CutElement& e, double radius) {
+  return e.kind == CutElement::Kind::Arc && std::abs(e.radius - radius) <= 1e-9 * (1 + radius);
+}
+
 Vec2 along(Vec2 from, Vec2 to) {
   const double l = std::hypot(to.x - from.x, to.y - from.y);
   return l > 0 ? Vec2{(to.x - from.x) / l, (to.y - from.y) / l} : Vec2{0, 0};
@@ -145,11 +150,8 @@ std::optional<Vec2> mitre(const CutElement& before, const CutElement& arc, const
   const bool lineBefore = before.kind == CutElement::Kind::Line,
              lineAfter = after.kind == CutElement::Kind::Line;
   // Not onto another corner arc (a zero-length one OCCT leaves where two corners meet).
-  const auto corner = [&](const CutElement& e) {
-    return e.kind == CutElement::Kind::Arc && std::abs(e.radius - arc.radius) <= 1e-9 * (1 + arc.radius);
-  };
   if (before.kind == CutElement::Kind::Circle || after.kind == CutElement::Kind::Circle ||
-      (!lineBefore && !lineAfter) || corner(before) || corner(after))
+      (!lineBefore && !lineAfter) || cornerArc(before, arc.radius) || cornerArc(after, arc.radius))
     return std::nullopt;
   const double reach = arc.radius * std::tan(sweepOf(arc) / 2);
   Vec2 m;
@@ -193,9 +195,7 @@ CutLoop mitred(const CutLoop& loop, double radius, const Region2d& paper) {
   for (size_t i = 0; i < n; ++i) {
     const CutElement& e = loop[i];
     const size_t b = (i + n - 1) % n, a = (i + 1) % n;
-    if (e.kind != CutElement::Kind::Arc || std::abs(e.radius - radius) > 1e-9 * (1 + radius) ||
-        e.ccw != *left || sweepOf(e) >= kMitredTurn || drop[b] || drop[a])
-      continue;
+    if (!cornerArc(e, radius) || e.ccw != *left || sweepOf(e) >= kMitredTurn || drop[b] || drop[a]) continue;
     const std::optional<Vec2> m = mitre(out[b], e, out[a]);
     if (!m) continue;
     CutElement before = out[b], after = out[a];
