@@ -128,10 +128,12 @@ TEST(Slots, CutterGrowsEachSlotOnceForEveryChoice) {
 
 // The search bounds a move by the cutter's neck test alone (SlotCutter::opened) and finishes
 // the state from it later: the neck test never counts more pieces than cut() where it found
-// no slivers, and cut() given it makes the same bits as cut() alone.
+// no slivers, and cut() given it makes the same bits as cut() alone. The search's own cut
+// (tryCut, its pieces not united again) counts as cut() does, trims where it trims, keeps
+// the same paper, and paperOf() gives cut()'s very bits.
 TEST(Slots, NeckTestBoundsTheCutsCount) {
   SlotParams params;  // neck 0.15 mm with no tolerance
-  int checked = 0, bounded = 0, slivered = 0;
+  int checked = 0, bounded = 0, slivered = 0, trimmed = 0;
   const auto check = [&](const SlotCutter& cutter, const std::vector<SlotCut>& cuts,
                          const std::string& what) {
     const Region2d slots = slotRegion(cuts, params);
@@ -141,6 +143,14 @@ TEST(Slots, NeckTestBoundsTheCutsCount) {
     const Region2d b = cutter.cut(slots, &finished, &opened);
     EXPECT_EQ(a.paths(), b.paths()) << what;
     EXPECT_EQ(alone, finished) << what;
+    for (const SlotCutter::Opened* known : {static_cast<const SlotCutter::Opened*>(nullptr), &opened}) {
+      const SlotCutter::Trial trial = cutter.tryCut(slots, known);
+      EXPECT_EQ(trial.pieces, alone) << what;
+      EXPECT_NEAR(trial.paper.area(), a.area(), 1e-6) << what;
+      EXPECT_NEAR(trial.paper.subtract(a).area() + a.subtract(trial.paper).area(), 0, 1e-6) << what;
+      EXPECT_EQ(cutter.paperOf(slots, trial).paths(), a.paths()) << what;
+      trimmed += trial.trimmed;
+    }
     if (opened.slivers.empty()) {
       EXPECT_LE(opened.pieces, alone) << what;
       ++bounded;
@@ -173,6 +183,7 @@ TEST(Slots, NeckTestBoundsTheCutsCount) {
   EXPECT_EQ(checked, 53);
   EXPECT_GT(bounded, 0);
   EXPECT_GT(slivered, 0);  // both kinds were checked
+  EXPECT_GT(trimmed, 0);   // and a trial that trimmed slivers off
 }
 
 // The search keeps patch states computed for earlier moves and computes them on both

@@ -48,9 +48,8 @@ std::vector<int> grazingHinges(const RealizationInput& in, const SlotParams& par
   parallelFor(static_cast<size_t>(n), [&](size_t p) {
     if (!needed[p]) return;
     base[p] = patchHinges(in, first, static_cast<int>(p));
-    int pieces = 1;
-    cutters[p]->cut(slotRegion(planSlots(in.patches[p].shape, base[p], params), params), &pieces);
-    whole[p] = pieces == 1;
+    whole[p] =
+        cutters[p]->tryCut(slotRegion(planSlots(in.patches[p].shape, base[p], params), params)).pieces == 1;
     for (PatchHinge& h : base[p]) h.slot = Slot::None;
   });
   // The position of hinge h in its patch's list (patchHinges keeps the hinges' order).
@@ -63,9 +62,7 @@ std::vector<int> grazingHinges(const RealizationInput& in, const SlotParams& par
   const auto splits = [&](int p, int index, Slot slot) {
     std::vector<PatchHinge> hs = base[p];
     hs[index].slot = slot;
-    int pieces = 1;
-    cutters[p]->cut(slotRegion(planSlots(in.patches[p].shape, hs, params), params), &pieces);
-    return pieces > 1;
+    return cutters[p]->tryCut(slotRegion(planSlots(in.patches[p].shape, hs, params), params)).pieces > 1;
   };
   std::vector<char> grazing(hinges.size(), 0);
   parallelFor(hinges.size(), [&](size_t i) {

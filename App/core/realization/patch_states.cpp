@@ -37,7 +37,10 @@ std::shared_ptr<const PatchState> PatchStates::evaluatePatch(int p, const std::v
   const PatchShape& ps = in_.patches[p];
   auto st = std::make_shared<PatchState>();
   st->cuts = planSlots(*lines_[p], patchHinges(in_, slots, p), params_);
-  st->slotted = cutters_[p]->cut(slotRegion(st->cuts, params_), &st->pieces, opened);
+  SlotCutter::Trial trial = cutters_[p]->tryCut(slotRegion(st->cuts, params_), opened);
+  st->slotted = std::move(trial.paper);
+  st->pieces = trial.pieces;
+  st->trimmed = trial.trimmed;
   st->holes = holeLoops(st->slotted, ps.position);
   std::vector<double> xs;
   for (const int h : hingesOf_[p])
@@ -55,6 +58,12 @@ std::shared_ptr<const PatchState> PatchStates::evaluatePatch(int p, const std::v
   for (const Region2d::Loop& loop : st->holes.holes) st->bytes += loop.size() * sizeof(Vec2) + 32;
   st->bytes += st->holes.boxes.size() * sizeof(Box2);
   return st;
+}
+
+Region2d PatchStates::paperOf(int p, const PatchState& st) const {
+  SlotCutter::Trial trial;
+  trial.trimmed = st.trimmed;
+  return cutters_[p]->paperOf(slotRegion(st.cuts, params_), trial);
 }
 
 MemoKey PatchStates::memoKey(int p, const std::vector<SlotPair>& slots) const {

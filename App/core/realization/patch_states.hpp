@@ -22,8 +22,10 @@ constexpr size_t kPatchStateCacheBytes = size_t{48} << 20;
 // One patch slotted with one choice of slots: what the search needs to know of it.
 struct PatchState {
   std::vector<SlotCut> cuts;
+  // As SlotCutter::tryCut leaves it: paperOf() gives what the files get.
   Region2d slotted;
   int pieces = 1;
+  bool trimmed = false;  // slivers cut away
   HoleLoops holes;
   // Per hinge of the patch (in PatchStates' hinge order): the lengths of the hinge segment
   // the slotted patch still covers, for the search's meets(); read off once here, not at
@@ -63,6 +65,9 @@ class PatchStates {
               const std::vector<std::vector<int>>& hingesOf, const std::vector<SlotPair>& first);
 
   Key key(int p, const std::vector<SlotPair>& slots) const;
+
+  // Patch p's paper as the files get it, for its state `st`: the state's own, united.
+  Region2d paperOf(int p, const PatchState& st) const;
 
   // Patch patches[i] with slots[i] (or slots[0] for all when `same`), on both cores, through
   // the memo when there is one.

@@ -134,10 +134,10 @@ class Search {
     Realization r;
     r.params = params_;
     r.slots = slots_;
-    for (const auto& st : state_) {
-      r.cuts.push_back(st->cuts);
-      r.slotted.push_back(st->slotted);
-    }
+    for (const auto& st : state_) r.cuts.push_back(st->cuts);
+    r.slotted.resize(n_);
+    parallelFor(static_cast<size_t>(n_),
+                [&](size_t p) { r.slotted[p] = states_->paperOf(static_cast<int>(p), *state_[p]); });
     const Score s = score();
     r.interlocks = {found_, std::max(0, found_ - s.interlocks), s.interlocks, s.cutThroughs};
     for (int p = 0; p < n_; ++p)

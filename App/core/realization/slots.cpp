@@ -390,9 +390,9 @@ SlotCutter::SlotCutter(const Region2d& shape, const SlotParams& params, double t
       erodedShape_(shape.offset(-neck_)),
       shapePieces_(openedPieceCount(shape, neck_, crumb_)) {}
 
-Region2d SlotCutter::keep(const Region2d& cleared, int* kept) const {
+Region2d SlotCutter::keep(const Region2d& cleared, int* kept, bool united) const {
   std::vector<Region2d> pieces;
-  for (Region2d& piece : shape_.subtractComponents(cleared))
+  for (Region2d& piece : united ? shape_.subtractComponents(cleared) : shape_.subtractComponentsRaw(cleared))
     if (piece.area() >= crumb_) pieces.push_back(std::move(piece));
   *kept = static_cast<int>(pieces.size());
   // Pieces of one difference are apart already: laid side by side, not united again (a
@@ -406,25 +406,47 @@ SlotCutter::Opened SlotCutter::opened(const Region2d& slots) const {
   return o;
 }
 
-Region2d SlotCutter::cut(const Region2d& slots, int* pieces, const Opened* known) const {
+SlotCutter::Trial SlotCutter::cutAs(const Region2d& slots, const Opened* known, bool united) const {
+  Trial t;
   int kept = 0;
-  const Region2d out = keep(slots, &kept);
-  if (!pieces) return out;
+  t.paper = keep(slots, &kept, united);
   Opened made;
   const Opened& o = known ? *known : (made = opened(slots));
-  *pieces = std::max(kept, o.pieces);
+  t.pieces = std::max(kept, o.pieces);
   // Slivers: a strip of paper between a slot and the outline, thinner than the neck where
   // it joins the rest, tears off like a crumb falls out. Cut away with their thread, and
   // kept so when that leaves fewer pieces (rocker-arm: 0.6 mm² beside a slot leaving
   // the paper 0.3 mm from its edge).
-  if (*pieces == 1 || o.slivers.empty()) return out;
+  if (t.pieces == 1 || o.slivers.empty()) return t;
   const Region2d cleared = slots.unite(Region2d::uniteAll(o.slivers).offset(neck_));
   int trimmedKept = 0;
-  const Region2d trimmed = keep(cleared, &trimmedKept);
+  Region2d trimmed = keep(cleared, &trimmedKept, united);
   const int trimmedPieces = std::max(trimmedKept, openedPieces(cleared, nullptr));
-  if (trimmedPieces >= *pieces) return out;
-  *pieces = trimmedPieces;
-  return trimmed;
+  if (trimmedPieces >= t.pieces) return t;
+  t.pieces = trimmedPieces;
+  t.paper = std::move(trimmed);
+  t.trimmed = true;
+  return t;
+}
+
+Region2d SlotCutter::cut(const Region2d& slots, int* pieces, const Opened* known) const {
+  if (!pieces) {
+    int kept = 0;
+    return keep(slots, &kept, true);
+  }
+  Trial t = cutAs(slots, known, true);
+  *pieces = t.pieces;
+  return std::move(t.paper);
+}
+
+SlotCutter::Trial SlotCutter::tryCut(const Region2d& slots, const Opened* known) const {
+  return cutAs(slots, known, false);
+}
+
+Region2d SlotCutter::paperOf(const Region2d& slots, const Trial& trial) const {
+  int pieces = 0;
+  // Untrimmed, cut()'s paper is the shape less the slots; trimmed (rare), cut() decides again.
+  return trial.trimmed ? cut(slots, &pieces) : cut(slots, nullptr);
 }
 
 int SlotCutter::openedPieces(const Region2d& slots, std::vector<Region2d>* slivers) const {

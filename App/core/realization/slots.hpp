@@ -142,6 +142,20 @@ class SlotCutter {
   // `known`: opened(slots), when the caller has it already.
   Region2d cut(const Region2d& slots, int* pieces, const Opened* known = nullptr) const;
 
+  // What cut() counts and keeps, for the searches, which read the count and the paper's
+  // shape but never its vertices' order: the pieces as Clipper's difference leaves them,
+  // not united again one by one (their loops may start at another vertex, and keep one
+  // within 1.4e-5 mm of its neighbours' line). The union was half of every cut's work
+  // (occ/Top.brep). `trimmed`: whether slivers were cut away.
+  struct Trial {
+    Region2d paper;
+    int pieces = 1;
+    bool trimmed = false;
+  };
+  Trial tryCut(const Region2d& slots, const Opened* known = nullptr) const;
+  // cut()'s paper, for the slots a trial cut: only what reaches the files is united.
+  Region2d paperOf(const Region2d& slots, const Trial& trial) const;
+
   // Opened pieces smaller than this many crumbs, once slots are cut, are slivers (cut()).
   static constexpr double kSliverCrumbs = 4;
 
@@ -156,8 +170,11 @@ class SlotCutter {
   static constexpr double kNeckArcTolerance = 0.01;  // mm
 
  private:
-  // The shape less `cleared`, crumbs dropped; `kept` is set to the pieces left.
-  Region2d keep(const Region2d& cleared, int* kept) const;
+  // The shape less `cleared`, crumbs dropped; `kept` is set to the pieces left. Each piece
+  // united again (Region2d::subtractComponents) when `united`, else as the difference left
+  // it (subtractComponentsRaw).
+  Region2d keep(const Region2d& cleared, int* kept, bool united) const;
+  Trial cutAs(const Region2d& slots, const Opened* known, bool united) const;
   // Opened pieces of the shape less `slots` beyond the shape's own, plus one (the neck
   // test); those smaller than kSliverCrumbs crumbs go to `slivers` when it is given.
   int openedPieces(const Region2d& slots, std::vector<Region2d>* slivers) const;
