@@ -5,6 +5,8 @@
 #include <gtest/gtest.h>
 
 #include <BRepAdaptor_Curve.hxx>
+#include <BRepPrimAPI_MakeBox.hxx>
+#include <BRepPrimAPI_MakeCylinder.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopoDS.hxx>
 
@@ -463,6 +465,42 @@ TEST(Layout, KerfPathsOfAMeshAreItsPolygonsMovedOut) {
   for (const FlatPatch& p : d.layout.patches)
     for (const Region2d::Loop& loop : p.outline.loops()) vertices += static_cast<int>(loop.size());
   EXPECT_LE(mitres, vertices * 11 / 10);
+}
+
+// An exact face with an edge that is neither a line nor a circle (here the hole's ellipses,
+// a box minus a cylinder sliced at 45° to its axis) gets its kerf path from the paper's
+// polygon, as a mesh's patch does: lines only, half the kerf off the paper. OCCT's offset
+// would fit B-splines to the ellipses' offsets, 18 ms a face.
+TEST(Layout, KerfPathsOfFacesWithOtherCurvesComeFromThePaperPolygon) {
+  const TopoDS_Shape box =
+      test::cut(BRepPrimAPI_MakeBox(80, 60, 60).Shape(),
+                BRepPrimAPI_MakeCylinder(gp_Ax2(gp_Pnt(40, 30, -20), gp_Dir(0, 0, 1)), 15, 100).Shape());
+  DesignParams params;
+  params.arrangement.slices = 32;
+  params.arrangement.u = {1, 0, 0};
+  params.arrangement.v = {0, std::sqrt(0.5), std::sqrt(0.5)};
+  const double r = 0.1;
+  params.slots.kerf = 2 * r;
+  const Design d = runDesign(modelFromShape(box, "box minus a cylinder"), params);
+  int curved = 0;
+  for (const FlatPatch& p : d.layout.patches) {
+    const PatchFace& face = d.patches[p.patch];
+    bool other = false;
+    for (TopExp_Explorer it(face.shape, TopAbs_EDGE); it.More(); it.Next()) {
+      const GeomAbs_CurveType type = BRepAdaptor_Curve(TopoDS::Edge(it.Current())).GetType();
+      other = other || (type != GeomAbs_Line && type != GeomAbs_Circle);
+    }
+    if (!face.exact || !other) continue;
+    ++curved;
+    const KerfBand band(p.outline, r, kOutlineDeflection + 0.002);
+    ASSERT_FALSE(p.cut.empty()) << p.id;
+    for (const CutLoop& loop : p.cut)
+      for (const CutElement& e : loop) {
+        ASSERT_EQ(e.kind, CutElement::Kind::Line) << p.id;
+        for (const Vec2& q : sample(e, 0.001)) band.expectHolds(q, p.id);
+      }
+  }
+  EXPECT_GT(curved, 0) << "no exact patch with an ellipse: the test no longer tests it";
 }
 
 // Where OCCT's offset fails on an exact face (occt-misc Axis_of_bearing.brep: one patch of

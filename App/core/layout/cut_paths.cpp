@@ -230,6 +230,18 @@ std::vector<CutLoop> polygonPaths(const Region2d& paper, double kerf) {
   return loops;
 }
 
+// Whether every edge of `shape` is a line or a circle: what OCCT's offset moves exactly,
+// and what the sheets keep as lines and arcs.
+bool linesAndCircles(const TopoDS_Shape& shape) {
+  return occtGuard("reading a patch's edges", [&] {
+    for (TopExp_Explorer e(shape, TopAbs_EDGE); e.More(); e.Next()) {
+      const GeomAbs_CurveType type = BRepAdaptor_Curve(TopoDS::Edge(e.Current())).GetType();
+      if (type != GeomAbs_Line && type != GeomAbs_Circle) return false;
+    }
+    return true;
+  });
+}
+
 }  // namespace
 
 std::vector<CutLoop> cutPaths(const LayoutInput& d, int k) {
@@ -243,6 +255,10 @@ std::vector<CutLoop> cutPaths(const LayoutInput& d, int k) {
   // for corners sharper than kMitredTurn (cut square, not round), in a fraction of the time
   // (OCCT's offset: 12 ms a patch of fandisk's).
   if (!patch.exact) return polygonPaths(patch.outline, kerf);
+  // So is an exact face with an edge of another kind (an ellipse, a B-spline): OCCT offsets
+  // it as B-splines it fits (the box minus a cylinder turned 45° about X, its hole's ellipses:
+  // 18 ms a face, 0.35 s of a Kerf edit), and the sheets draw those as lines all the same.
+  if (!linesAndCircles(patch.shape)) return polygonPaths(patch.outline, kerf);
   std::vector<CutLoop> loops;
   try {
     loops = cutLoops(kerfCompensated(patch.shape, kerf), to2d);
