@@ -130,7 +130,7 @@ TEST(Slots, CutterGrowsEachSlotOnceForEveryChoice) {
 // the state from it later: the neck test never counts more pieces than cut() where it found
 // no slivers, and cut() given it makes the same bits as cut() alone. The search's own cut
 // (tryCut, its pieces not united again) counts as cut() does, trims where it trims, keeps
-// the same paper, and paperOf() gives cut()'s very bits.
+// the same paper, and paperOf() gives cut()'s very bits; inPieces() says what its count says.
 TEST(Slots, NeckTestBoundsTheCutsCount) {
   SlotParams params;  // neck 0.15 mm with no tolerance
   int checked = 0, bounded = 0, slivered = 0, trimmed = 0;
@@ -143,6 +143,7 @@ TEST(Slots, NeckTestBoundsTheCutsCount) {
     const Region2d b = cutter.cut(slots, &finished, &opened);
     EXPECT_EQ(a.paths(), b.paths()) << what;
     EXPECT_EQ(alone, finished) << what;
+    EXPECT_EQ(cutter.inPieces(slots), alone > 1) << what;
     for (const SlotCutter::Opened* known : {static_cast<const SlotCutter::Opened*>(nullptr), &opened}) {
       const SlotCutter::Trial trial = cutter.tryCut(slots, known);
       EXPECT_EQ(trial.pieces, alone) << what;

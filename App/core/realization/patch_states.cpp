@@ -60,10 +60,13 @@ std::shared_ptr<const PatchState> PatchStates::evaluatePatch(int p, const std::v
   return st;
 }
 
-Region2d PatchStates::paperOf(int p, const PatchState& st) const {
-  SlotCutter::Trial trial;
-  trial.trimmed = st.trimmed;
-  return cutters_[p]->paperOf(slotRegion(st.cuts, params_), trial);
+const Region2d& PatchStates::paperOf(int p, const PatchState& st) const {
+  if (!st.united) {
+    SlotCutter::Trial trial;
+    trial.trimmed = st.trimmed;
+    st.united = std::make_shared<const Region2d>(cutters_[p]->paperOf(slotRegion(st.cuts, params_), trial));
+  }
+  return *st.united;
 }
 
 MemoKey PatchStates::memoKey(int p, const std::vector<SlotPair>& slots) const {

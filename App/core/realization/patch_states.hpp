@@ -26,6 +26,9 @@ struct PatchState {
   Region2d slotted;
   int pieces = 1;
   bool trimmed = false;  // slivers cut away
+  // The paper as the files get it (PatchStates::paperOf), made when first asked: a split
+  // repair's searches end on states they share but a few (occ/Top.brep: 24 searches).
+  mutable std::shared_ptr<const Region2d> united;
   HoleLoops holes;
   // Per hinge of the patch (in PatchStates' hinge order): the lengths of the hinge segment
   // the slotted patch still covers, for the search's meets(); read off once here, not at
@@ -66,8 +69,9 @@ class PatchStates {
 
   Key key(int p, const std::vector<SlotPair>& slots) const;
 
-  // Patch p's paper as the files get it, for its state `st`: the state's own, united.
-  Region2d paperOf(int p, const PatchState& st) const;
+  // Patch p's paper as the files get it, for its state `st`: the state's own, united (once;
+  // kept in `st`, so no two threads may ask for one state at once).
+  const Region2d& paperOf(int p, const PatchState& st) const;
 
   // Patch patches[i] with slots[i] (or slots[0] for all when `same`), on both cores, through
   // the memo when there is one.

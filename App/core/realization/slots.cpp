@@ -443,6 +443,12 @@ SlotCutter::Trial SlotCutter::tryCut(const Region2d& slots, const Opened* known)
   return cutAs(slots, known, false);
 }
 
+bool SlotCutter::inPieces(const Region2d& slots) const {
+  const Opened o = opened(slots);
+  if (o.slivers.empty() && o.pieces > 1) return true;
+  return cutAs(slots, &o, false).pieces > 1;
+}
+
 Region2d SlotCutter::paperOf(const Region2d& slots, const Trial& trial) const {
   int pieces = 0;
   // Untrimmed, cut()'s paper is the shape less the slots; trimmed (rare), cut() decides again.

@@ -153,6 +153,10 @@ class SlotCutter {
     bool trimmed = false;
   };
   Trial tryCut(const Region2d& slots, const Opened* known = nullptr) const;
+  // Whether cut() leaves the patch in pieces. The neck test alone says so where it counts
+  // pieces and finds no slivers (cut() counts at least as many); the cut is made only
+  // otherwise (the graze tests: most of their tries are of patches in pieces).
+  bool inPieces(const Region2d& slots) const;
   // cut()'s paper, for the slots a trial cut: only what reaches the files is united.
   Region2d paperOf(const Region2d& slots, const Trial& trial) const;
 
