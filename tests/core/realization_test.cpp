@@ -131,6 +131,7 @@ TEST(Slots, CutterGrowsEachSlotOnceForEveryChoice) {
 // no slivers, and cut() given it makes the same bits as cut() alone. The search's own cut
 // (tryCut, its pieces not united again) counts as cut() does, trims where it trims, keeps
 // the same paper, and paperOf() gives cut()'s very bits; inPieces() says what its count says.
+// The searches give them the slots' strips overlaid (slotStrips), not united.
 TEST(Slots, NeckTestBoundsTheCutsCount) {
   SlotParams params;  // neck 0.15 mm with no tolerance
   int checked = 0, bounded = 0, slivered = 0, trimmed = 0;
@@ -143,9 +144,14 @@ TEST(Slots, NeckTestBoundsTheCutsCount) {
     const Region2d b = cutter.cut(slots, &finished, &opened);
     EXPECT_EQ(a.paths(), b.paths()) << what;
     EXPECT_EQ(alone, finished) << what;
-    EXPECT_EQ(cutter.inPieces(slots), alone > 1) << what;
-    for (const SlotCutter::Opened* known : {static_cast<const SlotCutter::Opened*>(nullptr), &opened}) {
-      const SlotCutter::Trial trial = cutter.tryCut(slots, known);
+    // The searches cut the strips overlaid, not united (slotStrips).
+    const Region2d strips = slotStrips(cuts, params);
+    const SlotCutter::Opened openedStrips = cutter.opened(strips);
+    EXPECT_EQ(openedStrips.pieces, opened.pieces) << what;
+    EXPECT_EQ(openedStrips.slivers.size(), opened.slivers.size()) << what;
+    EXPECT_EQ(cutter.inPieces(strips), alone > 1) << what;
+    for (const SlotCutter::Opened* known : {static_cast<const SlotCutter::Opened*>(nullptr), &openedStrips}) {
+      const SlotCutter::Trial trial = cutter.tryCut(strips, known);
       EXPECT_EQ(trial.pieces, alone) << what;
       EXPECT_NEAR(trial.paper.area(), a.area(), 1e-6) << what;
       EXPECT_NEAR(trial.paper.subtract(a).area() + a.subtract(trial.paper).area(), 0, 1e-6) << what;
@@ -161,16 +167,20 @@ TEST(Slots, NeckTestBoundsTheCutsCount) {
     ++checked;
   };
   // Two slots on one line with a bridge of paper between their roots, and a slot beside.
+  // Square ends, then round ones (a disc over each closed end: loops that overlap).
   const SlotCutter plain(rect(0, 0, 30, 12), params, 0);
-  for (int k = 0; k <= 12; ++k)
-    for (const double beside : {0.0, 0.2, 0.6}) {
-      const double gap = 0.05 * k;
-      std::vector<SlotCut> cuts = {{8, {-1, 6 - gap / 2}, true, false},
-                                   {8, {6 + gap / 2, 13}, false, true},
-                                   {20, {-1, 5}, true, false}};
-      if (beside > 0) cuts.push_back({20 + params.width() + beside, {4, 13}, false, true});
-      check(plain, cuts, "gap " + std::to_string(gap) + ", beside " + std::to_string(beside));
-    }
+  for (const SlotEnd end : {SlotEnd::Square, SlotEnd::Round})
+    for (int k = 0; k <= 12; ++k)
+      for (const double beside : {0.0, 0.2, 0.6}) {
+        params.end = end;
+        const double gap = 0.05 * k;
+        std::vector<SlotCut> cuts = {{8, {-1, 6 - gap / 2}, true, false},
+                                     {8, {6 + gap / 2, 13}, false, true},
+                                     {20, {-1, 5}, true, false}};
+        if (beside > 0) cuts.push_back({20 + params.width() + beside, {4, 13}, false, true});
+        check(plain, cuts, "gap " + std::to_string(gap) + ", beside " + std::to_string(beside));
+      }
+  params.end = SlotEnd::Square;
   // A 1.2 mm tab on the right edge; a slot 0.1 mm inside that edge, up to near the tab's
   // top, leaves the tab held by a bridge of paper thinner than the neck: a sliver, which
   // cut() trims off when that leaves fewer pieces.
@@ -181,7 +191,7 @@ TEST(Slots, NeckTestBoundsTheCutsCount) {
       if (second) cuts.push_back({15, {-1, 11.9}, true, false});
       check(tabbed, cuts, "root " + std::to_string(root) + (second ? ", second slot" : ""));
     }
-  EXPECT_EQ(checked, 53);
+  EXPECT_EQ(checked, 92);
   EXPECT_GT(bounded, 0);
   EXPECT_GT(slivered, 0);  // both kinds were checked
   EXPECT_GT(trimmed, 0);   // and a trial that trimmed slivers off

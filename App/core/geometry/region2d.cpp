@@ -232,6 +232,18 @@ Region2d Region2d::fromLoops(const std::vector<Loop>& loops, FillRule rule) {
   return fromPaths(paths, rule);
 }
 
+Region2d Region2d::overlaidLoops(const std::vector<Loop>& loops) {
+  Region2d region;
+  region.paths_.reserve(loops.size());
+  for (const Loop& loop : loops) {
+    ClipperLib::Path path;
+    path.reserve(loop.size());
+    for (const Vec2& p : loop) path.push_back({toUnits(p.x), toUnits(p.y)});
+    if (path.size() >= 3) region.paths_.push_back(std::move(path));
+  }
+  return region;
+}
+
 Region2d Region2d::fromPaths(const Paths& paths, FillRule rule) {
   Region2d region;
   Clipper clipper;

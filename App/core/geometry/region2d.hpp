@@ -47,6 +47,8 @@ class Region2d {
   // by the non-zero rule) read them as one. For loops that seldom overlap, a union first
   // would cost a sweep over all of them for nothing.
   static Region2d overlaid(const std::vector<Region2d>& regions);
+  // Loops in mm, counterclockwise, as they are: overlaid, not united.
+  static Region2d overlaidLoops(const std::vector<Loop>& loops);
   // Each loop alone, as it is, a region of its own: a region without holes in its pieces.
   std::vector<Region2d> loopsApart() const;
 

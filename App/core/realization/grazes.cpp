@@ -48,7 +48,7 @@ std::vector<int> grazingHinges(const RealizationInput& in, const SlotParams& par
   parallelFor(static_cast<size_t>(n), [&](size_t p) {
     if (!needed[p]) return;
     base[p] = patchHinges(in, first, static_cast<int>(p));
-    whole[p] = !cutters[p]->inPieces(slotRegion(planSlots(in.patches[p].shape, base[p], params), params));
+    whole[p] = !cutters[p]->inPieces(slotStrips(planSlots(in.patches[p].shape, base[p], params), params));
     for (PatchHinge& h : base[p]) h.slot = Slot::None;
   });
   // The position of hinge h in its patch's list (patchHinges keeps the hinges' order).
@@ -61,7 +61,7 @@ std::vector<int> grazingHinges(const RealizationInput& in, const SlotParams& par
   const auto splits = [&](int p, int index, Slot slot) {
     std::vector<PatchHinge> hs = base[p];
     hs[index].slot = slot;
-    return cutters[p]->inPieces(slotRegion(planSlots(in.patches[p].shape, hs, params), params));
+    return cutters[p]->inPieces(slotStrips(planSlots(in.patches[p].shape, hs, params), params));
   };
   std::vector<char> grazing(hinges.size(), 0);
   parallelFor(hinges.size(), [&](size_t i) {

@@ -37,7 +37,7 @@ std::shared_ptr<const PatchState> PatchStates::evaluatePatch(int p, const std::v
   const PatchShape& ps = in_.patches[p];
   auto st = std::make_shared<PatchState>();
   st->cuts = planSlots(*lines_[p], patchHinges(in_, slots, p), params_);
-  SlotCutter::Trial trial = cutters_[p]->tryCut(slotRegion(st->cuts, params_), opened);
+  SlotCutter::Trial trial = cutters_[p]->tryCut(slotStrips(st->cuts, params_), opened);
   st->slotted = std::move(trial.paper);
   st->pieces = trial.pieces;
   st->trimmed = trial.trimmed;
@@ -162,7 +162,7 @@ void PatchStates::prepareBounds(const std::vector<SlotMove>& moves, const std::v
     if (opened[i]) return;
     const int p = keys[i].first;
     const std::vector<SlotCut> cuts = planSlots(*lines_[p], patchHinges(in_, slotsOf[i], p), params_);
-    opened[i] = std::make_shared<SlotCutter::Opened>(cutters_[p]->opened(slotRegion(cuts, params_)));
+    opened[i] = std::make_shared<SlotCutter::Opened>(cutters_[p]->opened(slotStrips(cuts, params_)));
   });
   for (const size_t i : missing) {
     // The key too: an entry is small, and the cache holds many (Top: 25,565 tests).

@@ -263,12 +263,24 @@ SlotShapes slotShapes(const std::vector<SlotCut>& cuts, const SlotParams& params
   return out;
 }
 
-Region2d slotRegion(const std::vector<SlotCut>& cuts, const SlotParams& params) {
+namespace {
+
+std::vector<Region2d::Loop> slotLoops(const std::vector<SlotCut>& cuts, const SlotParams& params) {
   const SlotShapes shapes = slotShapes(cuts, params);
   std::vector<Region2d::Loop> loops;
   for (const Box2& b : shapes.rectangles) loops.push_back(rectangle(b.min.x, b.min.y, b.max.x, b.max.y));
   for (const Disc& d : shapes.discs) loops.push_back(disc(d.centre.x, d.centre.y, d.radius));
-  return Region2d::fromLoops(loops, FillRule::NonZero);
+  return loops;
+}
+
+}  // namespace
+
+Region2d slotRegion(const std::vector<SlotCut>& cuts, const SlotParams& params) {
+  return Region2d::fromLoops(slotLoops(cuts, params), FillRule::NonZero);
+}
+
+Region2d slotStrips(const std::vector<SlotCut>& cuts, const SlotParams& params) {
+  return Region2d::overlaidLoops(slotLoops(cuts, params));
 }
 
 namespace {
