@@ -155,7 +155,7 @@ TEST(Slots, NeckTestBoundsTheCutsCount) {
       EXPECT_EQ(trial.pieces, alone) << what;
       EXPECT_NEAR(trial.paper.area(), a.area(), 1e-6) << what;
       EXPECT_NEAR(trial.paper.subtract(a).area() + a.subtract(trial.paper).area(), 0, 1e-6) << what;
-      EXPECT_EQ(cutter.paperOf(slots, trial).paths(), a.paths()) << what;
+      EXPECT_EQ(cutter.paperOf(slots, trial.trimmed).paths(), a.paths()) << what;
       trimmed += trial.trimmed;
     }
     if (opened.slivers.empty()) {

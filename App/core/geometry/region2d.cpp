@@ -221,15 +221,7 @@ ClipperLib::cInt Region2d::toUnits(double mm) {
 }
 
 Region2d Region2d::fromLoops(const std::vector<Loop>& loops, FillRule rule) {
-  Paths paths;
-  paths.reserve(loops.size());
-  for (const Loop& loop : loops) {
-    ClipperLib::Path path;
-    path.reserve(loop.size());
-    for (const Vec2& p : loop) path.push_back({toUnits(p.x), toUnits(p.y)});
-    if (path.size() >= 3) paths.push_back(std::move(path));
-  }
-  return fromPaths(paths, rule);
+  return fromPaths(overlaidLoops(loops).paths_, rule);
 }
 
 Region2d Region2d::overlaidLoops(const std::vector<Loop>& loops) {

@@ -61,11 +61,9 @@ std::shared_ptr<const PatchState> PatchStates::evaluatePatch(int p, const std::v
 }
 
 const Region2d& PatchStates::paperOf(int p, const PatchState& st) const {
-  if (!st.united) {
-    SlotCutter::Trial trial;
-    trial.trimmed = st.trimmed;
-    st.united = std::make_shared<const Region2d>(cutters_[p]->paperOf(slotRegion(st.cuts, params_), trial));
-  }
+  if (!st.united)
+    st.united =
+        std::make_shared<const Region2d>(cutters_[p]->paperOf(slotRegion(st.cuts, params_), st.trimmed));
   return *st.united;
 }
 

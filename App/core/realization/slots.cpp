@@ -461,10 +461,10 @@ bool SlotCutter::inPieces(const Region2d& slots) const {
   return cutAs(slots, &o, false).pieces > 1;
 }
 
-Region2d SlotCutter::paperOf(const Region2d& slots, const Trial& trial) const {
+Region2d SlotCutter::paperOf(const Region2d& slots, bool trimmed) const {
   int pieces = 0;
   // Untrimmed, cut()'s paper is the shape less the slots; trimmed (rare), cut() decides again.
-  return trial.trimmed ? cut(slots, &pieces) : cut(slots, nullptr);
+  return trimmed ? cut(slots, &pieces) : cut(slots, nullptr);
 }
 
 int SlotCutter::openedPieces(const Region2d& slots, std::vector<Region2d>* slivers) const {

@@ -161,8 +161,9 @@ class SlotCutter {
   // pieces and finds no slivers (cut() counts at least as many); the cut is made only
   // otherwise (the graze tests: most of their tries are of patches in pieces).
   bool inPieces(const Region2d& slots) const;
-  // cut()'s paper, for the slots a trial cut: only what reaches the files is united.
-  Region2d paperOf(const Region2d& slots, const Trial& trial) const;
+  // cut()'s paper, for the slots a trial cut (`trimmed`: the trial's): only what reaches
+  // the files is united.
+  Region2d paperOf(const Region2d& slots, bool trimmed) const;
 
   // Opened pieces smaller than this many crumbs, once slots are cut, are slivers (cut()).
   static constexpr double kSliverCrumbs = 4;
