@@ -422,8 +422,7 @@ TEST(Layout, KerfPathsKeepHalfTheKerfOffThePaperAndMitreTheirCorners) {
       for (const CutElement& e : loop) {
         for (const Vec2& q : sample(e, 0.001)) band.expectHolds(q, p.id);
         if (e.kind == CutElement::Kind::Arc && std::abs(e.radius - r) < 1e-9) {
-          const double sweep = std::fmod((e.ccw ? e.end - e.start : e.start - e.end) + 4 * M_PI, 2 * M_PI);
-          EXPECT_GE(sweep, 120 * M_PI / 180 - 1e-9) << p.id << ": a corner arc turning less than 120°";
+          EXPECT_GE(sweepOf(e), 120 * M_PI / 180 - 1e-9) << p.id << ": a corner arc turning less than 120°";
           ++corners;
         }
       }

@@ -253,12 +253,11 @@ std::vector<CutLoop> cutPaths(const LayoutInput& d, int k) {
   // A polygon patch (a mesh's, or one put back to the slot search's polygon) is its polygon
   // moved out: what OCCT's offset and the mitres below make of it, to Clipper's 10 nm, but
   // for corners sharper than kMitredTurn (cut square, not round), in a fraction of the time
-  // (OCCT's offset: 12 ms a patch of fandisk's).
-  if (!patch.exact) return polygonPaths(patch.outline, kerf);
-  // So is an exact face with an edge of another kind (an ellipse, a B-spline): OCCT offsets
-  // it as B-splines it fits (the box minus a cylinder turned 45° about X, its hole's ellipses:
-  // 18 ms a face, 0.35 s of a Kerf edit), and the sheets draw those as lines all the same.
-  if (!linesAndCircles(patch.shape)) return polygonPaths(patch.outline, kerf);
+  // (OCCT's offset: 12 ms a patch of fandisk's). So is an exact face with an edge of another
+  // kind (an ellipse, a B-spline): OCCT offsets it as B-splines it fits (the box minus a
+  // cylinder turned 45° about X, its hole's ellipses: 18 ms a face, 0.35 s of a Kerf edit),
+  // and the sheets draw those as lines all the same.
+  if (!patch.exact || !linesAndCircles(patch.shape)) return polygonPaths(patch.outline, kerf);
   std::vector<CutLoop> loops;
   try {
     loops = cutLoops(kerfCompensated(patch.shape, kerf), to2d);

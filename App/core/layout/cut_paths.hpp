@@ -11,8 +11,9 @@
 namespace sliceform {
 
 // Patch `patch`'s cut paths, the kerf (input.realization.params.kerf) applied: OCCT's offset
-// of an exact face, its corners that turn less than 120° mitred; the paper's polygon moved
-// out by Clipper for a polygon patch, or where OCCT's offset fails (docs/decisions.md, Kerf).
+// of an exact face of lines and circles, its corners that turn less than 120° mitred; the
+// paper's polygon moved out by Clipper for a polygon patch, an exact face with other curves,
+// or where OCCT's offset fails (docs/decisions.md, Kerf).
 std::vector<CutLoop> cutPaths(const LayoutInput& input, int patch);
 
 }  // namespace sliceform
