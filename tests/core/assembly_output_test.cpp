@@ -37,6 +37,7 @@
 #include "output/assembly_png.hpp"
 #include "output/gltf.hpp"
 #include "output/jpeg.hpp"
+#include "output/png_file.hpp"
 #include "realization/realize.hpp"
 #include "support/error.hpp"
 #include "support/plane_curves.hpp"
@@ -347,6 +348,51 @@ TEST(AssemblyOutput, PictureShowsBothPaperColours) {
   EXPECT_GT(warm / pixels, 0.03);
   EXPECT_GT(cool / pixels, 0.03);
   EXPECT_GT(dark / pixels, 0.005) << "edge lines";
+}
+
+// What a PNG file holds, read back by cairo: 0x00RRGGBB a pixel, row by row.
+Picture readPng(const std::string& path) {
+  cairo_surface_t* image = cairo_image_surface_create_from_png(path.c_str());
+  EXPECT_EQ(cairo_surface_status(image), CAIRO_STATUS_SUCCESS);
+  Picture out;
+  out.width = cairo_image_surface_get_width(image), out.height = cairo_image_surface_get_height(image);
+  const unsigned char* data = cairo_image_surface_get_data(image);
+  const int stride = cairo_image_surface_get_stride(image);
+  for (int y = 0; y < out.height; ++y)
+    for (int x = 0; x < out.width; ++x)
+      out.pixels.push_back(reinterpret_cast<const uint32_t*>(data + y * stride)[x] & 0xFFFFFF);
+  cairo_surface_destroy(image);
+  return out;
+}
+
+// The PNG files are written by libpng with one row filter and a fast level (png_file.cpp):
+// pixel for pixel the picture, whatever the row stride.
+TEST(AssemblyOutput, PngFilesHoldThePicturePixelForPixel) {
+  test::TempDir dir;
+  const Picture drawn = drawAssembly(assemblyPanels(torus().arrangement, torus().faces, 60), 300);
+  writePicturePng(drawn, dir.file("torus.png"));
+  const Picture read = readPng(dir.file("torus.png"));
+  EXPECT_EQ(read.width, drawn.width);
+  EXPECT_EQ(read.height, drawn.height);
+  EXPECT_TRUE(read.pixels == drawn.pixels);
+  // Rows three pixels longer than the picture (a cairo surface's stride), every channel
+  // value in every position.
+  const int w = 61, h = 37, stride = w + 3;
+  std::vector<uint32_t> pixels(static_cast<size_t>(stride) * h, 0xFF000000);
+  std::vector<uint32_t> expected;
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      const uint32_t c = static_cast<uint32_t>((x * 4 + y) & 255) << 16 |
+                         static_cast<uint32_t>(255 - x * 3) << 8 | static_cast<uint32_t>(y * 7);
+      pixels[static_cast<size_t>(y) * stride + x] = c;
+      expected.push_back(c);
+    }
+  writeRgbPng(dir.file("strided.png"), pixels.data(), w, h, stride);
+  const Picture strided = readPng(dir.file("strided.png"));
+  EXPECT_EQ(strided.width, w);
+  EXPECT_EQ(strided.height, h);
+  EXPECT_TRUE(strided.pixels == expected);
+  EXPECT_THROW(writeRgbPng(dir.file("missing/a.png"), pixels.data(), w, h, stride), Error);
 }
 
 // Channels of two 0x00RRGGBB colours differ by more than `tolerance`.

@@ -16,6 +16,7 @@
 #endif
 
 #include "assembly/fold.hpp"
+#include "output/png_file.hpp"
 #include "support/atomic_file.hpp"
 #include "support/error.hpp"
 #include "support/parallel.hpp"
@@ -541,22 +542,9 @@ Picture drawAssembly(const std::vector<Panel3>& panels, int widthPixels) {
 }
 
 void writePicturePng(const Picture& picture, const std::string& path) {
-  using Surface = std::unique_ptr<cairo_surface_t, decltype(&cairo_surface_destroy)>;
-  const Surface surface(cairo_image_surface_create(CAIRO_FORMAT_RGB24, picture.width, picture.height),
-                        cairo_surface_destroy);
-  if (cairo_surface_status(surface.get()) != CAIRO_STATUS_SUCCESS)
-    throw Error(ErrorKind::Io, "cannot make a " + std::to_string(picture.width) + " x " +
-                                   std::to_string(picture.height) + " picture");
-  cairo_surface_flush(surface.get());
-  unsigned char* data = cairo_image_surface_get_data(surface.get());
-  const int stride = cairo_image_surface_get_stride(surface.get());
-  for (int y = 0; y < picture.height; ++y)
-    std::copy_n(picture.pixels.begin() + size_t(y) * picture.width, picture.width,
-                reinterpret_cast<uint32_t*>(data + size_t(y) * stride));  // RGB24: 0x00RRGGBB
-  cairo_surface_mark_dirty(surface.get());
   writeAtomically(path, [&](const std::string& temporary) {
-    if (cairo_surface_write_to_png(surface.get(), temporary.c_str()) != CAIRO_STATUS_SUCCESS)
-      throw Error(ErrorKind::Io, "cannot write " + path);
+    writeRgbPng(temporary, picture.pixels.data(), picture.width, picture.height,
+                static_cast<size_t>(picture.width));
   });
 }
 

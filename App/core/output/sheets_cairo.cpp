@@ -12,9 +12,11 @@
 #include <cmath>
 #include <fstream>
 #include <map>
+#include <memory>
 #include <string>
 
 #include "layout/labels.hpp"
+#include "output/png_file.hpp"
 #include "support/atomic_file.hpp"
 #include "support/error.hpp"
 
@@ -196,10 +198,12 @@ void writeSheetsPng(const std::vector<SheetDrawing>& sheets, const SheetSpec& sp
       cairo_restore(cr);
     }
     cairo_destroy(cr);
-    const cairo_status_t status = cairo_surface_write_to_png(surface, temporary.c_str());
-    cairo_surface_destroy(surface);
-    if (status != CAIRO_STATUS_SUCCESS)
-      throw Error(ErrorKind::Io, "cannot write " + path + ": " + cairo_status_to_string(status));
+    cairo_surface_flush(surface);
+    const std::unique_ptr<cairo_surface_t, decltype(&cairo_surface_destroy)> owned(surface,
+                                                                                   cairo_surface_destroy);
+    writeRgbPng(temporary, reinterpret_cast<const uint32_t*>(cairo_image_surface_get_data(surface)), width,
+                height,
+                static_cast<size_t>(cairo_image_surface_get_stride(surface)) / 4);  // RGB24: 0x00RRGGBB
   });
 }
 
