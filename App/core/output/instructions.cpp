@@ -41,15 +41,13 @@ std::string joined(const std::vector<std::string>& ids) {
 
 // A picture on the page, fitted into w x h mm with its top-left at (x, y).
 void drawPicture(cairo_t* cr, const Picture& p, double x, double y, double w, double h) {
-  const Surface image(cairo_image_surface_create(CAIRO_FORMAT_RGB24, p.width, p.height),
+  // The picture's own pixels, not a copy in a surface cairo makes (and zeroes first): a
+  // picture's rows are as long as cairo asks for RGB24 (4 bytes a pixel, a multiple of 4).
+  static_assert(sizeof(uint32_t) == 4);
+  const Surface image(cairo_image_surface_create_for_data(
+                          reinterpret_cast<unsigned char*>(const_cast<uint32_t*>(p.pixels.data())),
+                          CAIRO_FORMAT_RGB24, p.width, p.height, p.width * 4),
                       cairo_surface_destroy);
-  cairo_surface_flush(image.get());
-  unsigned char* data = cairo_image_surface_get_data(image.get());
-  const int stride = cairo_image_surface_get_stride(image.get());
-  for (int row = 0; row < p.height; ++row)
-    std::copy_n(p.pixels.begin() + size_t(row) * p.width, p.width,
-                reinterpret_cast<uint32_t*>(data + size_t(row) * stride));
-  cairo_surface_mark_dirty(image.get());
   // The PDF carries the JPEG as it is (cairo deflates a raw image, which cost four fifths of
   // the booklet); the pixels above stay for any other surface. cairo frees the copy.
   const std::string jpeg = jpegBytes(p, kJpegQuality);
