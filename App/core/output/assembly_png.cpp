@@ -435,6 +435,16 @@ struct GrowingAssembly::State {
   Picture shown;              // the two together, downsampled: the picture before a step
   int thickness;
   double bias;
+  Picture step;  // what add() returns: `shown`, the last step's box highlighted
+  int stepX0 = 0, stepY0 = 0, stepX1 = 0, stepY1 = 0;  // that box, in the picture's pixels
+
+  // `step` as `shown` again where the last step highlighted its box.
+  void unhighlight() {
+    for (int y = stepY0; y < stepY1; ++y)
+      std::copy_n(shown.pixels.begin() + size_t(y) * shown.width + stepX0, stepX1 - stepX0,
+                  step.pixels.begin() + size_t(y) * step.width + stepX0);
+    stepX0 = stepY0 = stepX1 = stepY1 = 0;
+  }
 
   // A copy of the built raster's box [x0, x1) x [y0, y1) (supersampled pixels, whole
   // blocks); fillPanel draws into it with the whole picture's placement.
@@ -471,9 +481,10 @@ GrowingAssembly::GrowingAssembly(const std::vector<Panel3>& panels, int widthPix
   blank.width = pl.width / kSupersample;
   blank.height = pl.height / kSupersample;
   blank.pixels.assign(size_t(blank.width) * blank.height, kWhite);
+  Picture step = blank;
   state_.reset(new State{panels, pl, Raster(pl.width, pl.height),
                          std::vector<double>(size_t(pl.width) * pl.height, -HUGE_VAL), std::move(blank),
-                         thickness, edgeBias(pl, thickness)});
+                         thickness, edgeBias(pl, thickness), std::move(step)});
   state_->built.clear({0, pl.height});
 }
 
@@ -481,13 +492,15 @@ GrowingAssembly::~GrowingAssembly() = default;
 
 // A step changes the picture only inside the new panel's box and its outline's width, so
 // only that box is drawn again: on models of many patches, copying and downsampling the
-// whole raster at every step had been most of the booklet's time.
-Picture GrowingAssembly::add(int panel) {
+// whole raster at every step had been most of the booklet's time. Nor is the picture
+// copied whole for each step: the one returned is kept and mended box by box.
+const Picture& GrowingAssembly::add(int panel) {
   State& s = *state_;
+  s.unhighlight();
   const Panel3& p = s.panels[panel];
   const Projected seen = projected(s.pl, p);
   const double left = seen.left, right = seen.right, top = seen.top, bottom = seen.bottom;
-  if (left > right) return s.shown;  // nothing to draw
+  if (left > right) return s.step;  // nothing to draw
   const auto block = [](double v, int limit, bool up) {
     const int pixel = static_cast<int>(up ? std::ceil(v) : std::floor(v));
     const int blocks = (up ? pixel + kSupersample - 1 : pixel) / kSupersample;
@@ -500,19 +513,22 @@ Picture GrowingAssembly::add(int panel) {
   const int y1 = block(bottom + reach, s.pl.height, true);
   fillPanel(s.built, s.pl, p, seen, Fill::Paper, {0, s.built.height});
   keepEdges(s.lines, s.built, seen, s.thickness, s.bias);
-  if (x0 >= x1 || y0 >= y1) return s.shown;
+  if (x0 >= x1 || y0 >= y1) return s.step;
   Raster w = s.window(x0, y0, x1, y1);
   s.downsampleWindow(w, s.shown);
-  Picture out = s.shown;
   fillPanel(w, s.pl, p, seen, Fill::Highlight, {y0, y1});
   // The edges go over the highlight (downsampleWindow), the x-ray over both.
   for (int y = 0; y < w.height; ++y)
     for (int x = 0; x < w.width; ++x)
       if (s.edgeShows(w, x, y)) w.colour[size_t(y) * w.width + x] = kEdge;
   fillPanel(w, s.pl, p, seen, Fill::XRay, {y0, y1});
-  downsampleInto(w.width, w.height, out, x0 / kSupersample, y0 / kSupersample,
+  // The box in `step` is this step's alone: `shown` there is the picture before the
+  // highlight, and the box is given back to it at the next step.
+  downsampleInto(w.width, w.height, s.step, x0 / kSupersample, y0 / kSupersample,
                  [&](int x, int y) { return w.colour[size_t(y) * w.width + x]; });
-  return out;
+  s.stepX0 = x0 / kSupersample, s.stepY0 = y0 / kSupersample;
+  s.stepX1 = s.stepX0 + w.width / kSupersample, s.stepY1 = s.stepY0 + w.height / kSupersample;
+  return s.step;
 }
 
 Picture drawAssembly(const std::vector<Panel3>& panels, int widthPixels) {

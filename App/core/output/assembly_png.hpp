@@ -51,7 +51,9 @@ class GrowingAssembly {
  public:
   GrowingAssembly(const std::vector<Panel3>& panels, int widthPixels);
   ~GrowingAssembly();
-  Picture add(int panel);
+  // The picture with `panel` added; valid until the next add (one picture is kept and
+  // changed in the boxes of this step and the one before).
+  const Picture& add(int panel);
 
  private:
   struct State;
