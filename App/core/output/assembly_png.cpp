@@ -1,7 +1,6 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 #include "output/assembly_png.hpp"
 
-#include <cairo.h>
 #include <gp_Dir.hxx>
 #include <gp_Pnt.hxx>
 

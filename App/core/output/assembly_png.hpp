@@ -2,7 +2,7 @@
 // A picture of the assembled sliceform, drawn in software (no OpenGL, no display) so the
 // CLI and the tests can make it anywhere: an orthographic view from the front right and a
 // little above, panels z-buffered and shaded two-sided in two paper colours, with dark edges
-// so the slotted lattice reads clearly. Written as PNG with cairo.
+// so the slotted lattice reads clearly. Written as PNG with libpng (png_file.hpp).
 #pragma once
 
 #include <cstdint>
@@ -62,7 +62,7 @@ class GrowingAssembly {
 // The colour of the patch a step adds, RGB 0..255: a warm orange no paper colour comes near.
 constexpr uint32_t kHighlight = 0xE8603C;
 
-// Written atomically with cairo. Throws Io.
+// Written atomically (writeRgbPng). Throws Io.
 void writePicturePng(const Picture& picture, const std::string& path);
 
 // drawAssembly, then writePicturePng.

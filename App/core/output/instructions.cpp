@@ -49,7 +49,7 @@ void drawPicture(cairo_t* cr, const Picture& p, double x, double y, double w, do
                           CAIRO_FORMAT_RGB24, p.width, p.height, p.width * 4),
                       cairo_surface_destroy);
   // The PDF carries the JPEG as it is (cairo deflates a raw image, which cost four fifths of
-  // the booklet); the pixels above stay for any other surface. cairo frees the copy.
+  // the booklet); the picture's pixels stay for any other surface. cairo frees the copy.
   const std::string jpeg = jpegBytes(p, kJpegQuality);
   auto* bytes = static_cast<unsigned char*>(std::malloc(jpeg.size()));
   if (!bytes) throw std::bad_alloc();
