@@ -32,8 +32,12 @@ double cross(Vec2 o, Vec2 a, Vec2 b) {
   return (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x);
 }
 
+// Not std::hypot: glibc's guards against overflow and rounds correctly, at several times
+// the cost, and the paths and centres ask it of every pair (MODERN_Cooker_1: 16 % of the
+// leaders' time). Lengths here are millimetres on a sheet.
 double distance(Vec2 a, Vec2 b) {
-  return std::hypot(a.x - b.x, a.y - b.y);
+  const double dx = a.x - b.x, dy = a.y - b.y;
+  return std::sqrt(dx * dx + dy * dy);
 }
 
 bool segmentsCross(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {
@@ -87,7 +91,8 @@ std::vector<Vec2> targets(const Region2d& room, const LabelSpot& s) {
 // leader must not cross (the labels' boxes grown by the gap, and the leaders drawn).
 struct Field {
   const Region2d& room;
-  std::vector<Segment> edges, leaders;
+  mutable std::vector<Segment> edges;  // clear() moves the last to block to the front
+  std::vector<Segment> leaders;
   std::vector<Vec2> bends;
   std::vector<std::pair<Vec2, Vec2>> boxes;
 
@@ -134,12 +139,20 @@ struct Field {
   // Whether a leader may run straight from a to b: over the paper, clear of every label
   // and leader.
   bool clear(Vec2 a, Vec2 b) const {
+    // The edge that blocked the last leader tried most likely blocks this one (a bend's
+    // leaders to the other bends): it is tested first, and kept first (below). The answer
+    // is the same in any order (MODERN_Cooker_1: 173 million tests of boxes, leaders and
+    // edges -> 62 million).
+    if (!edges.empty() && segmentsCross(a, b, edges.front().a, edges.front().b)) return false;
     for (const auto& [lo, hi] : boxes)
       if (meetsBox(a, b, lo, hi)) return false;
     for (const Segment& l : leaders)
       if (segmentsCross(a, b, l.a, l.b)) return false;
-    for (const Segment& e : edges)
-      if (segmentsCross(a, b, e.a, e.b)) return false;
+    for (size_t i = 1; i < edges.size(); ++i)
+      if (segmentsCross(a, b, edges[i].a, edges[i].b)) {
+        std::swap(edges[i], edges.front());
+        return false;
+      }
     return room.contains({(a.x + b.x) / 2, (a.y + b.y) / 2});
   }
 };
