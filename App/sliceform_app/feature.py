@@ -249,6 +249,7 @@ class Sliceform:
         self.unlaid = {}  # key -> the key of its inputs but the sheet's
         self.sources = {}  # key -> the key of its source
         self.design, self.key, self.report = None, None, None
+        self.posed = None  # ((the key of the patches posed, FoldAngle), the shape set then)
 
     def onDocumentRestored(self, obj):
         old = initProperties(obj)
@@ -382,10 +383,20 @@ class Sliceform:
             if getattr(other, "Sliceform", None) != obj:
                 other.touch()
 
-    def _pose(self, obj, design):
+    def _pose(self, obj, design, again=True):
+        """Sets the feature's shape: the patches turned to FoldAngle. Not `again` when the
+        shape shows this design's patches at this angle already: a sheet, margin, spacing or
+        kerf edit lays the same patches out anew and leaves them where they stand (fandisk,
+        directions auto: 0.24 s of a Margin edit's 0.40 in FreeCAD 0.20, which copies the old
+        shape for Undo). An Undo puts back another shape: then it is posed again."""
+        posed = (self.unlaid.get(self.key, self.key), float(obj.FoldAngle.Value))
+        last = getattr(self, "posed", None)
+        if not again and last is not None and last[0] == posed and obj.Shape.isPartner(last[1]):
+            return
         shape = Part.Shape()
-        shape.importBrepFromString(design.assembly(float(obj.FoldAngle.Value)))
+        shape.importBrepFromString(design.assembly(posed[1]))
         obj.Shape = shape
+        self.posed = (posed, obj.Shape)
 
     def execute(self, obj):
         restore_traceback()
@@ -399,7 +410,7 @@ class Sliceform:
         design = self.ensure_design(obj)
         report = self.report
         self._set_results(obj, report)
-        self._pose(obj, design)
+        self._pose(obj, design, again=False)
         problems = report["verdict"]["problems"]
         if not report["verdict"]["buildable"]:
             raise DesignError(

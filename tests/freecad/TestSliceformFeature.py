@@ -243,6 +243,41 @@ class TestSliceformFeature(unittest.TestCase):
         finally:
             sliceform_native.design = design
 
+    def test_sheet_edit_keeps_the_pose(self):
+        """A margin or kerf edit lays the same patches out again: the feature's shape stays the
+        one set before, not posed again. After an Undo has put back an earlier shape, an edit
+        back to a design in memory poses that design's patches (the shape is not the one the
+        feature last set)."""
+        from sliceform_app import feature
+
+        box = self.doc.addObject("Part::Box", "Box")
+        box.Length, box.Width, box.Height = 120, 80, 60
+        self.doc.recompute()
+        sliceform = feature.makeSliceform(box, Slices=10)
+        self.assertTrue(sliceform.isValid(), sliceform.getStatusString())
+
+        def posed_now():
+            shape = Part.Shape()
+            shape.importBrepFromString(sliceform.Proxy.ensure_design(sliceform).assembly(float(sliceform.FoldAngle.Value)))
+            return shape
+
+        thin = sliceform.Shape
+        self.edit("Edit Margin", lambda: setattr(sliceform, "Margin", 15))
+        self.edit("Edit Kerf", lambda: setattr(sliceform, "Kerf", 0.12))
+        self.assertTrue(sliceform.isValid(), sliceform.getStatusString())
+        self.assertTrue(sliceform.Shape.isPartner(thin))
+        self.edit("Edit Thickness", lambda: setattr(sliceform, "Thickness", 1.0))
+        thick = sliceform.Shape
+        self.assertFalse(thick.isPartner(thin))
+        # Wider slots: less paper in the posed patches.
+        self.assertLess(thick.Area, thin.Area - 1)
+        self.doc.undo()
+        self.assertAlmostEqual(sliceform.Shape.Area, thin.Area, places=6)
+        self.edit("Edit Thickness", lambda: setattr(sliceform, "Thickness", 1.0))
+        self.assertTrue(sliceform.isValid(), sliceform.getStatusString())
+        self.assertAlmostEqual(sliceform.Shape.Area, posed_now().Area, places=6)
+        self.assertAlmostEqual(sliceform.Shape.Area, thick.Area, places=6)
+
     def test_partdesign_body_with_pocket(self):
         from sliceform_app import feature
 
