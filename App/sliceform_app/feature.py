@@ -391,7 +391,7 @@ class Sliceform:
         part of a Margin edit 0.29 s, 0.12 s without it). An Undo puts back another shape:
         then it is posed again."""
         posed = (self.unlaid.get(self.key, self.key), float(obj.FoldAngle.Value))
-        last = getattr(self, "posed", None)
+        last = self.posed  # set by _forget, which every way to a proxy calls
         if not again and last is not None and last[0] == posed and obj.Shape.isPartner(last[1]):
             return
         shape = Part.Shape()
