@@ -276,5 +276,39 @@ TEST(PartnerLabels, WhereNoLabelMayFitNoneIsFound) {
   EXPECT_GT(found, 50);
 }
 
+// The bound that ends labelPatch's tries with smaller ids (mayEverFit): where it says no
+// label may ever fit a slot, none is found on the bare patch, beside the slot at any size
+// up to the largest, on a leader, or as the last resort. Combs 60 mm wide whose slots crowd,
+// wide enough that the middle slots lie beyond a leader's reach of the paper at the sides.
+TEST(PartnerLabels, WhereNoLabelMayEverFitNoneIsFound) {
+  int never = 0, may = 0;
+  for (const auto& [count, pitch, below] : {std::tuple{40, 1.2, 0.8}, std::tuple{30, 1.6, 1.2},
+                                            std::tuple{12, 1.6, 2.0}, std::tuple{8, 2.4, 3.0}}) {
+    const Comb c = comb(count, pitch, below);
+    const LabelPaper paper = labelPaper(c.paper);
+    const BoxRoom& leaders = leaderPaper(paper);
+    const LabelPaper lastResort{BoxRoom(leaders.region()), c.paper, {}, std::nullopt};
+    for (const LabelSpot& s : c.spots) {
+      if (mayEverFit(paper, s)) {
+        ++may;
+        continue;
+      }
+      ++never;
+      for (const double height : {3.5, 2.8, 2.0, 1.4, kMinLabelHeight}) {
+        int missing = 0;
+        placePartners(paper, {s}, {}, height, missing);
+        EXPECT_EQ(missing, 1) << s.text << " at " << height;
+      }
+      EXPECT_FALSE(leaderLabel(paper.inner, leaders, s, {}, {3.5, kMinLabelHeight})) << s.text;
+      int missing = 0;
+      placePartners(lastResort, {s}, {}, kMinLabelHeight, missing);
+      EXPECT_EQ(missing, 1) << s.text;
+    }
+  }
+  // Both answers were given: the test would catch a bound that said never too often.
+  EXPECT_GT(never, 10);
+  EXPECT_GT(may, 20);
+}
+
 }  // namespace
 }  // namespace sliceform

@@ -54,5 +54,9 @@ std::optional<Label> leaderLabel(const BoxRoom& inner, const BoxRoom& leaderRoom
 bool leaderMayFit(const BoxRoom& inner, const BoxRoom& leaderRoom, const LabelSpot& s,
                   const std::vector<Label>& taken);
 bool besideMayFit(const BoxRoom& paper, const LabelSpot& s, const std::vector<Label>& taken);
+// Whether any try may label `s` at all: false only where no label of any size, set any way
+// (beside the slot, on its line, on a leader, the last resort), has room on the bare patch.
+// labelPatch tries smaller patch ids only while a slot left without may yet be labelled.
+bool mayEverFit(const LabelPaper& paper, const LabelSpot& s);
 
 }  // namespace sliceform
