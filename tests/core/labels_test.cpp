@@ -237,6 +237,11 @@ TEST(PartnerLabels, ASmallerPatchIdWhereItTookTheSlotsRoom) {
   }
 }
 
+// The paper the last resort places on: the leaders' paper as the labels' own room.
+LabelPaper lastResortPaper(const LabelPaper& paper) {
+  return {BoxRoom(leaderPaper(paper).region()), paper.paper, {}, std::nullopt};
+}
+
 // The bounds that end a retry before its leaders (label_room.hpp): where they say no label
 // may fit a slot, the placers find none, with those labels taken or more. Combs whose slots
 // crowd, with strips of paper under them from too narrow for any label to wide enough for
@@ -248,7 +253,7 @@ TEST(PartnerLabels, WhereNoLabelMayFitNoneIsFound) {
     const Comb c = comb(count, pitch, below);
     const LabelPaper paper = labelPaper(c.paper);
     const BoxRoom& leaders = leaderPaper(paper);
-    const LabelPaper lastResort{BoxRoom(leaders.region()), c.paper, {}, std::nullopt};
+    const LabelPaper lastResort = lastResortPaper(paper);
     for (int k = 0; k < 8; ++k) {
       std::vector<Label> taken;  // none at first
       for (double x = 1 + k * 0.9; k > 0 && x < 60; x += 7)
@@ -286,8 +291,7 @@ TEST(PartnerLabels, WhereNoLabelMayEverFitNoneIsFound) {
                                             std::tuple{12, 1.6, 2.0}, std::tuple{8, 2.4, 3.0}}) {
     const Comb c = comb(count, pitch, below);
     const LabelPaper paper = labelPaper(c.paper);
-    const BoxRoom& leaders = leaderPaper(paper);
-    const LabelPaper lastResort{BoxRoom(leaders.region()), c.paper, {}, std::nullopt};
+    const LabelPaper lastResort = lastResortPaper(paper);
     for (const LabelSpot& s : c.spots) {
       if (mayEverFit(paper, s)) {
         ++may;
@@ -299,7 +303,7 @@ TEST(PartnerLabels, WhereNoLabelMayEverFitNoneIsFound) {
         placePartners(paper, {s}, {}, height, missing);
         EXPECT_EQ(missing, 1) << s.text << " at " << height;
       }
-      EXPECT_FALSE(leaderLabel(paper.inner, leaders, s, {}, {3.5, kMinLabelHeight})) << s.text;
+      EXPECT_FALSE(leaderLabel(paper.inner, leaderPaper(paper), s, {}, {3.5, kMinLabelHeight})) << s.text;
       int missing = 0;
       placePartners(lastResort, {s}, {}, kMinLabelHeight, missing);
       EXPECT_EQ(missing, 1) << s.text;

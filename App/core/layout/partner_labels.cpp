@@ -248,11 +248,11 @@ std::vector<Label> placePartners(const LabelPaper& paper, const std::vector<Labe
 
 namespace {
 
-// A patch's labels with its id at most `nameHeight` high; `left` gets the spots left without
-// one. A try that must leave fewer than `toBeat` slots without a label to be kept stops
-// where it surely cannot, before its leaders.
+// A patch's labels with its id at most `nameHeight` high; `left`, when given, gets the spots
+// left without one. A try that must leave fewer than `toBeat` slots without a label to be
+// kept stops where it surely cannot, before its leaders.
 PatchLabels labelPartners(const LabelPaper& paper, const std::string& id, const std::vector<LabelSpot>& spots,
-                          double nameHeight, int toBeat, std::vector<size_t>& left) {
+                          double nameHeight, int toBeat, std::vector<size_t>* left = nullptr) {
   PatchLabels out;
   out.name = placeName(paper, id, {}, nameHeight);
   // Partner ids scale with the patch id, which says how much room the patch has.
@@ -261,11 +261,11 @@ PatchLabels labelPartners(const LabelPaper& paper, const std::string& id, const 
   std::vector<std::optional<Label>> partners = partnerLabels(paper.inner, spots, order, {out.name}, height);
   out.partners = present(partners, out.missing);
   std::vector<std::optional<Label>> best = partners;  // out's partners, in spot order
-  const auto done = [&]() -> PatchLabels& {
-    left.clear();
+  const auto noteLeft = [&] {
+    if (!left) return;
+    left->clear();
     for (size_t i = 0; i < spots.size(); ++i)
-      if (!best[i]) left.push_back(i);
-    return out;
+      if (!best[i]) left->push_back(i);
   };
   // A slot left without a label that has no room even on the bare patch has none whatever
   // the order: it is left out of the tries below.
@@ -304,7 +304,10 @@ PatchLabels labelPartners(const LabelPaper& paper, const std::string& id, const 
     next.name = placeName(paper, id, next.partners, nameHeight);
     if (next.name.height > 0) out = std::move(next), best = partners;  // the patch id comes first
   }
-  if (out.missing == 0) return done();
+  if (out.missing == 0) {
+    noteLeft();
+    return out;
+  }
   // What is left gets a label that stands off with a leader to its slot, set last so that
   // every label that reads as its slot's on its own keeps its room.
   const BoxRoom& leaderRoom = leaderPaper(paper);
@@ -319,7 +322,10 @@ PatchLabels labelPartners(const LabelPaper& paper, const std::string& id, const 
       if (!best[i] && (besideMayFit(leaderRoom, spots[i], taken) ||
                        leaderMayFit(paper.inner, leaderRoom, spots[i], taken)))
         ++mayFit;
-    if (mayFit <= spare) return done();
+    if (mayFit <= spare) {
+      noteLeft();
+      return out;
+    }
   }
   std::vector<double> sizes{std::min(height, kMaxPartnerHeight)};
   if (sizes.front() > kMinLabelHeight) sizes.push_back(kMinLabelHeight);
@@ -337,16 +343,17 @@ PatchLabels labelPartners(const LabelPaper& paper, const std::string& id, const 
   }
   out.missing = 0;
   out.partners = present(best, out.missing);
-  return done();
+  noteLeft();
+  return out;
 }
 
 }  // namespace
 
 PatchLabels labelPatch(const LabelPaper& paper, const std::string& id, const std::vector<LabelSpot>& spots,
                        int step) {
-  std::vector<size_t> left, ignored;
+  std::vector<size_t> left;
   PatchLabels out =
-      labelPartners(paper, id, spots, nameHeights().front(), std::numeric_limits<int>::max(), left);
+      labelPartners(paper, id, spots, nameHeights().front(), std::numeric_limits<int>::max(), &left);
   // A small patch whose id, set large at its deepest spot, took the room its slots' labels
   // need: the id (and with it the partner ids) a size smaller, up to three sizes, while that
   // labels more slots. A slot with no room for any label on the bare patch is left without
@@ -363,7 +370,7 @@ PatchLabels labelPatch(const LabelPaper& paper, const std::string& id, const std
   const std::vector<double>& sizes = nameHeights();
   auto smaller = std::upper_bound(sizes.begin(), sizes.end(), out.name.height, std::greater<double>());
   for (int tries = 0; tries < 3 && smaller != sizes.end() && !onlyNeverLeft(); ++tries, ++smaller) {
-    PatchLabels next = labelPartners(paper, id, spots, *smaller, out.missing, ignored);
+    PatchLabels next = labelPartners(paper, id, spots, *smaller, out.missing);
     if (next.missing < out.missing && next.name.height > 0) out = std::move(next);
   }
   if (step > 0) out.step = placeStep(paper, "#" + std::to_string(step), out.name, out.partners);
