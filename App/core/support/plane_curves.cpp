@@ -16,7 +16,9 @@
 namespace sliceform {
 
 TopoDS_Shape withPlaneCurves(const TopoDS_Shape& shape, bool trimmed) {
-  const TopoDS_Shape copy = BRepBuilderAPI_Copy(shape).Shape();
+  // The topology copied, its curves and surfaces shared: the 2D curves added below go to
+  // the copy's edges alone, and nothing here changes a curve or a surface.
+  const TopoDS_Shape copy = BRepBuilderAPI_Copy(shape, /*copyGeom=*/Standard_False).Shape();
   BRep_Builder builder;
   for (TopExp_Explorer f(copy, TopAbs_FACE); f.More(); f.Next()) {
     const TopoDS_Face& face = TopoDS::Face(f.Current());
