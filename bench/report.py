@@ -28,16 +28,16 @@ def markdown(r):
            "centres of %d equal cells of the bounding box along X and Y, model scaled to %g mm."
            % (r["size_mm"], r["slices"], r["repeat"], r["slices"], r["slices"], r["slices"], r["slices"],
               r["size_mm"]), "",
-           "| model | triangles | end-to-end s | floor s | × floor | FreeCAD sections s | peak MB | runs ok |",
-           "|---|---:|---:|---:|---:|---:|---:|---:|"]
+           "| model | triangles | end-to-end s | CPU s | floor s | × floor | FreeCAD sections s | peak MB | runs ok |",
+           "|---|---:|---:|---:|---:|---:|---:|---:|---:|"]
     for path, d in r["models"].items():
         fc = d.get("freecad", {})
         fcs = f(fc.get("median_s"), 1, 3) + (" (Part)" if fc.get("method") == "Part.Shape.slices" else "")
-        out.append("| %s | %s | %s | %s | %s | %s | %s | %d/%d |" % (
-            name(path), d["triangles"] or "—", f(d["wall_s"]), f(d["floor_s"], 1, 3), f(d["ratio_to_floor"], 1, 1),
-            fcs, f(d["rss_mb"], 1, 0), d["ok"], d["runs"]))
+        out.append("| %s | %s | %s | %s | %s | %s | %s | %s | %d/%d |" % (
+            name(path), d["triangles"] or "—", f(d["wall_s"]), f(d.get("cpu_s")), f(d["floor_s"], 1, 3),
+            f(d["ratio_to_floor"], 1, 1), fcs, f(d["rss_mb"], 1, 0), d["ok"], d["runs"]))
         for e in d["errors"]:
-            out.append("| | %s | | | | | | |" % e.replace("|", "/"))
+            out.append("| | %s | | | | | | | |" % e.replace("|", "/"))
     out.append("")
     for path, e in r.get("refused", {}).items():
         out.append("Refused (exit %d): %s  " % (e["rc"], e["error"]))
@@ -165,7 +165,7 @@ def missing(r):
         if d["ok"] != d["runs"] or d["floor_ok"] != d["runs"]:
             bad.append("%s: %d/%d design runs, %d floor runs ok %s" % (name(path), d["ok"], d["runs"],
                                                                     d["floor_ok"], d["errors"]))
-        for k in ("wall_s", "rss_mb", "floor_s", "floor_slicing_s", "ratio_to_floor", "triangles"):
+        for k in ("wall_s", "cpu_s", "rss_mb", "floor_s", "floor_slicing_s", "ratio_to_floor", "triangles"):
             if d.get(k) is None:
                 bad.append("%s: no %s" % (name(path), k))
         bad += ["%s: no %s time" % (name(path), s) for s, v in d["stages_s"].items() if v is None]

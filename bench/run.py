@@ -44,8 +44,10 @@ def median(xs):
 
 
 def timed(cmd, cwd):
-    """Runs cmd: exit code, wall s and peak RSS MB, both measured here (the child's rusage
-    from wait4: no /usr/bin/time needed, which the Debian 13 root lacks)."""
+    """Runs cmd: exit code, wall s, CPU s (user and system, every thread) and peak RSS MB,
+    measured here (the child's rusage from wait4: no /usr/bin/time needed, which the Debian
+    13 root lacks). The host's speed swings by a quarter between hours; CPU s beside wall s
+    tells work saved from a core left idle."""
     with tempfile.TemporaryFile("w+") as out, tempfile.TemporaryFile("w+") as err:
         t0 = time.time()
         p = subprocess.Popen(cmd, cwd=cwd, stdout=out, stderr=err, text=True)
@@ -60,7 +62,8 @@ def timed(cmd, cwd):
         lines = ["Command terminated by signal %d" % -p.returncode]
     elif not lines and p.returncode > 0:
         lines = ["Command exited with non-zero status %d" % p.returncode]
-    return {"rc": p.returncode, "t0": t0, "wall_s": wall, "rss_mb": usage.ru_maxrss / 1024,
+    return {"rc": p.returncode, "t0": t0, "wall_s": wall, "cpu_s": usage.ru_utime + usage.ru_stime,
+            "rss_mb": usage.ru_maxrss / 1024,
             "stdout": stdout, "error": lines[0] if lines else None}
 
 
@@ -68,7 +71,7 @@ def design_once(cli, model, n, size, tmp):
     out = os.path.join(tmp, "design")
     shutil.rmtree(out, ignore_errors=True)
     r = timed([cli, "design", model, "--size", str(size), "-n", str(n), "-o", out], tmp)
-    run = {"rc": r["rc"], "wall_s": r["wall_s"], "rss_mb": r["rss_mb"], "error": r["error"]}
+    run = {"rc": r["rc"], "wall_s": r["wall_s"], "cpu_s": r["cpu_s"], "rss_mb": r["rss_mb"], "error": r["error"]}
     tri = re.search(r"^model .*, (\d+) triangles\)", r["stdout"], re.M)
     run["triangles"] = int(tri.group(1)) if tri else None
     if r["rc"] != 0 or not os.path.exists(os.path.join(out, "timings.json")):
@@ -98,6 +101,7 @@ def summarise(runs):
     names = [s for s in ["start + exit", "read"] + STAGES if any(s in r["stages_s"] for r in ok)]
     names += sorted({s for r in ok for s in r["stages_s"]} - set(names) - set(EXPORT)) + EXPORT
     return {"runs": len(runs), "ok": len(ok), "wall_s": median(r["wall_s"] for r in ok),
+            "cpu_s": median(r["cpu_s"] for r in ok),
             "rss_mb": max((r["rss_mb"] for r in ok if r["rss_mb"]), default=None),
             "triangles": next((r["triangles"] for r in runs if r.get("triangles")), None),
             "stages_s": {s: median(r["stages_s"].get(s) for r in ok) for s in names} if ok else {},
