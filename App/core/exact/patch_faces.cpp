@@ -141,18 +141,28 @@ Region2d nearCylinder(const Cylinder& cylinder, double meshDeflection) {
   return cylinder.section.offset(std::max(4 * meshDeflection, 0.05));
 }
 
+// Whether at least half of `piece` lies in `near` (whose bounds are `nearBox`). Most of a
+// slice's pieces lie far from a given cylinder (occ/Bottom.brep: 335 of 709 with boxes
+// apart): those need no Boolean.
+bool mostlyNear(const Region2d& piece, const Region2d& near, const Box2& nearBox) {
+  const double area = piece.area();
+  if (area > 0 && apart(piece.bounds(), nearBox, 0)) return false;
+  return piece.intersect(near).area() >= 0.5 * area;
+}
+
 // The slices of a cylinder whose sections add to its union, chosen on the search's polygon
 // slices before any exact section is cut. They lie within the mesh deflection of the exact
 // sections, and most of a cylinder's slices lie inside another: on screw.step every
 // cylinder's union is one of its sections, and 244 exact sections were cut for the 24 fused.
 std::vector<int> slicesAddingToUnion(const Cylinder& cylinder, const SliceSet& set, double meshDeflection) {
   const Region2d near = nearCylinder(cylinder, meshDeflection);
+  const Box2 nearBox = near.bounds();
   std::vector<int> slices;
   std::vector<Region2d> polygons;
   for (int k = cylinder.firstSlice; k <= cylinder.lastSlice; ++k) {
     std::vector<Region2d> own;
     for (const Region2d& piece : set.slices[k].region.components())
-      if (piece.intersect(near).area() >= 0.5 * piece.area()) own.push_back(piece);
+      if (mostlyNear(piece, near, nearBox)) own.push_back(piece);
     if (own.empty()) continue;
     slices.push_back(k);
     polygons.push_back(Region2d::uniteAll(own));
@@ -171,6 +181,7 @@ TopoDS_Shape exactSection(const Cylinder& cylinder, const std::vector<int>& chos
                           double meshDeflection) {
   const double deflection = exactDeflection(meshDeflection);
   const Region2d near = nearCylinder(cylinder, meshDeflection);
+  const Box2 nearBox = near.bounds();
   std::vector<TopoDS_Shape> candidates;
   std::vector<Region2d> polygons;
   for (const int k : chosen) {
@@ -183,7 +194,7 @@ TopoDS_Shape exactSection(const Cylinder& cylinder, const std::vector<int>& chos
         gp_Vec(-frame.normal.x * s.position, -frame.normal.y * s.position, -frame.normal.z * s.position));
     for (const TopoDS_Shape& f : faces(s.faces)) {
       Region2d poly = polygoniseFaces(f, frame, deflection);
-      if (poly.intersect(near).area() < 0.5 * poly.area()) continue;
+      if (!mostlyNear(poly, near, nearBox)) continue;
       candidates.push_back(f.Moved(TopLoc_Location(onto)));
       polygons.push_back(std::move(poly));
     }

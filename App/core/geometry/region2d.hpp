@@ -29,6 +29,13 @@ struct Box2 {
   bool empty = true;
 };
 
+// Whether boxes a and b are more than `gap` mm apart along x or y (an empty box is apart
+// from any): with gap 0, regions in them share no area.
+inline bool apart(const Box2& a, const Box2& b, double gap) {
+  return a.empty || b.empty || b.min.x - a.max.x > gap || a.min.x - b.max.x > gap ||
+         b.min.y - a.max.y > gap || a.min.y - b.max.y > gap;
+}
+
 class Region2d {
  public:
   // 10 nm: far below any cutting tolerance, and keeps models up to ~10 m inside Clipper's

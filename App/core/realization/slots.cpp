@@ -58,12 +58,6 @@ Region2d::Loop disc(double cx, double cy, double r) {
   return out;
 }
 
-// Whether boxes a and b are more than `gap` mm apart along x or y.
-bool apart(const Box2& a, const Box2& b, double gap) {
-  return a.empty || b.empty || b.min.x - a.max.x > gap || a.min.x - b.max.x > gap ||
-         b.min.y - a.max.y > gap || a.min.y - b.max.y > gap;
-}
-
 struct Segment {
   Vec2 a, b;
 };
