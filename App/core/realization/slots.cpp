@@ -353,12 +353,17 @@ int countOpenedParts(const std::vector<Part>& parts, double neck, double crumb, 
   return n;
 }
 
+// openedPieceCount of the region whose erosion by `neck` is `eroded`.
+int openedPiecesOfEroded(const Region2d& eroded, double neck, double crumb) {
+  std::vector<Part> parts;
+  for (Region2d& part : eroded.components()) parts.push_back(makePart(std::move(part)));
+  return countOpenedParts(parts, neck, crumb, 0, nullptr);
+}
+
 }  // namespace
 
 int openedPieceCount(const Region2d& region, double neck, double crumb) {
-  std::vector<Part> parts;
-  for (Region2d& part : region.offset(-neck).components()) parts.push_back(makePart(std::move(part)));
-  return countOpenedParts(parts, neck, crumb, 0, nullptr);
+  return openedPiecesOfEroded(region.offset(-neck), neck, crumb);
 }
 
 int openedPieceCountFull(const Region2d& region, double neck, double crumb) {
@@ -394,7 +399,9 @@ SlotCutter::SlotCutter(const Region2d& shape, const SlotParams& params, double t
       crumb_(slotCrumb(params)),
       neck_(slotNeck(params, tolerance)),
       erodedShape_(shape.offset(-neck_)),
-      shapePieces_(openedPieceCount(shape, neck_, crumb_)) {}
+      // The erosion openedPieceCount(shape) would make again (erodedShape_ is declared, so
+      // made, first).
+      shapePieces_(openedPiecesOfEroded(erodedShape_, neck_, crumb_)) {}
 
 Region2d SlotCutter::keep(const Region2d& cleared, int* kept, bool united) const {
   std::vector<Region2d> pieces;
