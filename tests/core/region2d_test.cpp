@@ -345,10 +345,10 @@ double lengthOf(const std::vector<Interval>& iv) {
   return sum;
 }
 
-// The erosion met on the lines is the erosion's, to the bit of what decides it: every point
-// of the region at least d from its boundary is in it and no other (sampled along every
-// line), and its ends lie d from the boundary. Clipper's offset(-d) on the same lines
-// agrees but for its chords (1 µm inside the true arcs): where a line grazes an arc.
+// The erosion met on the lines is the erosion's: every point of the region more than d from
+// its boundary is in it and no other (sampled along every line), and its ends lie d from the
+// boundary. Clipper's offset(-d) on the same lines agrees but for its chords (1 µm inside
+// the true arcs), which tell most where a line grazes an arc.
 TEST(Region2d, ErodedOnVerticalLinesIsTheErosion) {
   // The region of IntervalsOnVerticalLinesAreEachLinesToTheBit three times as large.
   std::vector<Loop> loops{{{0, -2}, {3, 0}, {7.3, 0.4}, {9.1, 6.7}, {4, 5}, {0, 2}, {-3, 0}},

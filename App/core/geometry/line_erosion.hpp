@@ -13,9 +13,10 @@ namespace sliceform {
 // region.intervalsOnVerticalLines(xs): a point of the region lies in the erosion when no edge
 // comes nearer than delta, and the points of the line x = c nearer than delta to an edge
 // form one interval (the line across the edge's capsule, which is convex). So each line's
-// intervals less those near an edge are the erosion's, to rounding: offset() cuts round
-// corners as chords within its arc tolerance (1 µm) and rounds to Clipper's units, and its
-// intervals differ from these by that much (tests/core/region2d_test.cpp).
+// intervals less those near an edge are the erosion's, exactly. offset() cuts round corners
+// as chords within its arc tolerance (1 µm) and rounds to Clipper's units: its intervals end
+// up to that much apart from these, and further where a line grazes a round corner (the
+// chord meets it elsewhere along the arc); tests/core/region2d_test.cpp.
 std::vector<std::vector<Interval>> erodedOnVerticalLines(const Region2d& region,
                                                          const std::vector<double>& xs,
                                                          const std::vector<std::vector<Interval>>& full,
