@@ -67,11 +67,9 @@ std::vector<std::vector<Interval>> erodedOnVerticalLines(const Region2d& region,
                                                          const std::vector<double>& xs,
                                                          const std::vector<std::vector<Interval>>& full,
                                                          double delta) {
-  std::vector<size_t> order(xs.size());
-  for (size_t k = 0; k < order.size(); ++k) order[k] = k;
-  std::sort(order.begin(), order.end(), [&](size_t a, size_t b) { return xs[a] < xs[b]; });
-  std::vector<double> sorted;
-  for (const size_t k : order) sorted.push_back(xs[k]);
+  const SortedLines lines = sortedLines(xs);
+  const std::vector<double>& sorted = lines.xs;
+  const std::vector<size_t>& order = lines.index;
   // Each edge touches only the lines within delta of its x range.
   std::vector<std::vector<Interval>> near(xs.size());
   for (const Region2d::Loop& loop : region.loops())

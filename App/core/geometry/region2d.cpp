@@ -595,12 +595,19 @@ std::vector<Interval> Region2d::intervalsOnLine(Vec2 point, Vec2 dir) const {
   return paired(ts);
 }
 
+SortedLines sortedLines(const std::vector<double>& xs) {
+  SortedLines lines;
+  lines.index.resize(xs.size());
+  for (size_t k = 0; k < xs.size(); ++k) lines.index[k] = k;
+  std::sort(lines.index.begin(), lines.index.end(), [&](size_t a, size_t b) { return xs[a] < xs[b]; });
+  for (const size_t k : lines.index) lines.xs.push_back(xs[k]);
+  return lines;
+}
+
 std::vector<std::vector<Interval>> Region2d::intervalsOnVerticalLines(const std::vector<double>& xs) const {
-  std::vector<size_t> order(xs.size());
-  for (size_t k = 0; k < order.size(); ++k) order[k] = k;
-  std::sort(order.begin(), order.end(), [&](size_t a, size_t b) { return xs[a] < xs[b]; });
-  std::vector<double> sorted;
-  for (const size_t k : order) sorted.push_back(xs[k]);
+  const SortedLines lines = sortedLines(xs);
+  const std::vector<double>& sorted = lines.xs;
+  const std::vector<size_t>& order = lines.index;
   std::vector<std::vector<double>> ts(xs.size());
   double t = 0;
   for (const ClipperLib::Path& path : paths_)

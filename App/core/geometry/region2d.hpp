@@ -36,6 +36,14 @@ inline bool apart(const Box2& a, const Box2& b, double gap) {
          b.min.y - a.max.y > gap || a.min.y - b.max.y > gap;
 }
 
+// The lines x = xs[k] in ascending order (`xs`) and each one's index in the given list
+// (`index`): what the queries on many vertical lines sweep each edge over.
+struct SortedLines {
+  std::vector<double> xs;
+  std::vector<size_t> index;
+};
+SortedLines sortedLines(const std::vector<double>& xs);
+
 class Region2d {
  public:
   // 10 nm: far below any cutting tolerance, and keeps models up to ~10 m inside Clipper's
