@@ -6,6 +6,7 @@
 #include <cmath>
 #include <random>
 
+#include "frames/hinge_table.hpp"
 #include "geometry/line_erosion.hpp"
 #include "geometry/region2d.hpp"
 #include "support/error.hpp"
@@ -384,10 +385,7 @@ TEST(Region2d, ErodedOnVerticalLinesIsTheErosion) {
       lost += lengthOf(eroded[k]) < lengthOf(full[k]) - 2 * d + 1e-9;
       split += eroded[k].size() > full[k].size();
       // What one holds and the other does not.
-      double both = 0;
-      for (const Interval& a : eroded[k])
-        for (const Interval& b : clipper[k])
-          both += std::max(0.0, std::min(a.hi, b.hi) - std::max(a.lo, b.lo));
+      const double both = lengthOf(intersectIntervals(eroded[k], clipper[k]));
       apart += lengthOf(eroded[k]) + lengthOf(clipper[k]) - 2 * both;
       total += lengthOf(eroded[k]);
     }

@@ -18,7 +18,9 @@ Interval nearSegment(Vec2 a, Vec2 b, double c, double d) {
   };
   for (const Vec2& p : {a, b}) {
     const double dx = c - p.x, r2 = d * d - dx * dx;
-    if (r2 > 0) add(p.y - std::sqrt(r2), p.y + std::sqrt(r2));
+    if (r2 <= 0) continue;
+    const double h = std::sqrt(r2);
+    add(p.y - h, p.y + h);
   }
   const double ex = b.x - a.x, ey = b.y - a.y, len2 = ex * ex + ey * ey, len = std::sqrt(len2);
   if (!(len > 0)) return out;
