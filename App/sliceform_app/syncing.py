@@ -93,11 +93,14 @@ def sync(sliceform, recompute=True):
     while len(patches) < len(ids):
         patches.append(making.new_patch(doc, sliceform, len(patches)))
 
-    # Pages, by sheet.
+    # Pages, by sheet. The pages of sheets the design no longer has go once the views of
+    # the patches still there have moved off them (below): removing a page removes its views,
+    # and a view that may still be drawing is removed only after every view settled
+    # (settling.py); a view moved keeps drawing where it is (fandisk, a Slices edit that
+    # drops a sheet: 0.9 s of FreeCAD 1.0's waiting, and views made again for the patches
+    # on it).
     pages = lookup.pages_of(sliceform)
-    for page in pages[sheet_count:]:
-        template = page.Template
-        making.remove_objects(doc, [page] + ([template] if template is not None and not isinstance(template, str) else []))
+    surplus = pages[sheet_count:]
     pages = pages[:sheet_count]
     while len(pages) < sheet_count:
         pages.append(making.new_page(doc, sliceform, len(pages)))
@@ -117,7 +120,7 @@ def sync(sliceform, recompute=True):
         found = lookup.views_of(source)
         making.remove_objects(doc, found[1:])
         view = found[0] if found else making.new_view(doc, page, source, name)
-        owner = [p for p in pages if view in p.Views]
+        owner = [p for p in pages + surplus if view in p.Views]
         if owner != [page]:
             for other in owner:
                 other.removeView(view)
@@ -139,6 +142,10 @@ def sync(sliceform, recompute=True):
             if engraving.EngravingPart != k:
                 engraving.EngravingPart = k
             engraved.append((engraving, view_on(pages[s], engraving, making.engrave_view_name(patch, k))))
+    for page in surplus:
+        template = page.Template
+        making.remove_objects(doc, [page] + ([template] if template is not None and not isinstance(template, str) else []))
+
     # Engravings after every patch view of their page: a page draws its views in this
     # order, and each patch view's white face would hide the labels of one drawn before it.
     for page in pages:

@@ -553,6 +553,29 @@ class TestSliceformChildren(unittest.TestCase):
             sheet_patch = lookup.sheet_patch_of(patch)
             self.assertAlmostEqual(sheet_patch.Shape.BoundBox.YMax, 500)  # the corner vertex
 
+    def test_a_sheet_dropped_moves_its_views_to_the_sheets_left(self):
+        """An edit that lays the same patches out on fewer sheets: the last page goes, and
+        the views of the patches it showed move to the pages left, the same views (their
+        document ids), not views made again: removing a page removes its views, and in
+        FreeCAD 1.0 a view that may still be drawing is removed only after every view
+        settled."""
+        from sliceform_app import lookup
+
+        _box, cut = self.box_with_hole()
+        sliceform = self.create(cut)
+        self.assertEqual(sliceform.SheetCount, 2)
+        ids = {v.Name: v.ID for p in lookup.pages_of(sliceform) for v in p.Views}
+        last = {v.Name for v in lookup.pages_of(sliceform)[1].Views}
+        self.assertTrue(last)
+        FreeCAD.setActiveTransaction("Edit SheetSize")
+        sliceform.SheetSize = "A3"
+        self.doc.recompute()
+        FreeCAD.closeActiveTransaction()
+        self.assertEqual(sliceform.SheetCount, 1)
+        self.check_children(sliceform)
+        now = {v.Name: v.ID for p in lookup.pages_of(sliceform) for v in p.Views}
+        self.assertEqual(now, ids)
+
     def test_a_sheets_engraving_from_an_earlier_document_gives_way(self):
         """A document made when each page had one engraving for the whole sheet (linking the
         sliceform, with a SheetIndex): saved and opened, its next recompute leaves an
