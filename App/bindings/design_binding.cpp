@@ -278,6 +278,24 @@ void bindDesign(py::module_& m) {
           "The assembled sliceform at a fold angle in degrees (90: popped up) as a BREP string: a "
           "compound of one face per patch, in the source's coordinates (after sizing)")
       .def(
+          "fold_transforms",
+          [](const PyDesign& d, double theta) {
+            py::list out;
+            for (const FlatPatch& flat : d.design.layout.patches) {
+              const gp_Trsf t = foldTransform(d.design.arrangement, flat.patch, theta);
+              py::list m;
+              for (int r = 1; r <= 3; ++r)
+                for (int c = 1; c <= 4; ++c) m.append(t.Value(r, c));
+              for (const double v : {0.0, 0.0, 0.0, 1.0}) m.append(v);
+              out.append(m);
+            }
+            return out;
+          },
+          py::arg("fold_angle") = 90.0,
+          "Per patch, in flat_patches' order: where the fold angle in degrees (90: popped up) moves "
+          "it from its popped-up pose, as the 16 numbers of a 4 x 4 matrix, row by row: "
+          "assembly(angle)'s face of the patch is patch_faces()'s moved so")
+      .def(
           "patch_faces",
           [](const PyDesign& d) {
             py::list out;

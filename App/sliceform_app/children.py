@@ -90,7 +90,7 @@ class Patch(_Child):
         built = (proxy.unlaid.get(proxy.key, proxy.key), obj.Index)
         if getattr(self, "built", None) == built and not obj.Shape.isNull():
             return
-        shape, placement = patch_shape(patches[obj.Index], proxy.patch_faces(obj.Sliceform)[obj.Index])
+        shape, placement = proxy.local_faces(obj.Sliceform)[obj.Index]
         # The object's Placement places the shape: during a recompute FreeCAD gives a new
         # Shape the object's Placement, whatever the shape had.
         if obj.Placement != placement:
@@ -177,16 +177,3 @@ class Engraving(_Child):
             return
         obj.Shape = _on_sheet(geometry.stroke_shapes(parts[obj.EngravingPart]), sliceform.Proxy.sheets(sliceform))
         self.built, self.blank = built, False
-
-
-def patch_shape(patch, brep):
-    """The patch's paper (its face, slots and holes cut) as the core made it, the exact face
-    for a BRep source, in the coordinates of the patch's plane, and the placement of that
-    plane. Rebuilding it from the flat cut loops fitted B-splines to the polygonised
-    free-form edges (26 ms a patch on a box minus a cylinder cut aslant: 1.0 s of a
-    Thickness edit) and drew the kerf-compensated cut path, not the paper."""
-    shape = Part.Shape()
-    shape.importBrepFromString(brep)
-    placement = geometry.plane_placement(patch)
-    shape.transformShape(placement.inverse().toMatrix(), True)  # a copy: the geometry moves
-    return shape, placement

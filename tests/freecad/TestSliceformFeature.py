@@ -184,6 +184,27 @@ class TestSliceformFeature(unittest.TestCase):
         self.assertEqual(len(sliceform.Shape.Faces), sliceform.PatchCount)
         # Folding flattens the lattice: the footprint across U x V shrinks.
         self.assertLess(folded.XLength * folded.YLength, 0.8 * popped.XLength * popped.YLength)
+        # The pose is made of the patches' own faces moved by the core's fold transforms:
+        # face by face, the core's assembly at that angle (the same area where it stands).
+        design = sliceform.Proxy.ensure_design(sliceform)
+        for angle in (20, 55, 90):
+            sliceform.FoldAngle = angle
+            core = Part.Shape()
+            core.importBrepFromString(design.assembly(float(angle)))
+
+            def faces(shape):
+                b = [f.BoundBox for f in shape.Faces]
+                return sorted((round(f.Area, 6),) + tuple(round(v, 6) for v in (x.XMin, x.YMin, x.ZMin, x.XMax, x.YMax, x.ZMax))
+                              for f, x in zip(shape.Faces, b))
+
+            for mine, theirs in zip(faces(sliceform.Shape), faces(core)):
+                for a, b in zip(mine, theirs):
+                    self.assertAlmostEqual(a, b, delta=1e-5)
+            self.assertEqual(len(sliceform.Shape.Faces), len(core.Faces))
+        from sliceform_app import native
+
+        with self.assertRaisesRegex(native().Error, "fold angle"):
+            design.fold_transforms(0.0)
 
     def test_sheet_edit_lays_out_the_same_design_again(self):
         """A sheet, margin or spacing edit reuses the design in memory and only nests it again
