@@ -216,6 +216,8 @@ TEST(Buildable, DesigningAgainTakesOnlyStagesWhoseInputsAreTheSame) {
     const Design fresh = runDesign(model, params);
     EXPECT_EQ(again.arrangement.stagesTaken, e.taken) << e.what;
     EXPECT_EQ(fresh.arrangement.stagesTaken, 0) << e.what;
+    // The quality's measures of the slices and cylinders are taken with the cylinders.
+    EXPECT_EQ(again.arrangement.qualityBase == before.arrangement.qualityBase, e.taken == 3) << e.what;
     EXPECT_EQ(reportJson(model, params, again).dump(), reportJson(model, params, fresh).dump()) << e.what;
   }
   // With the directions chosen for the model: the full design in the frame chosen before

@@ -108,7 +108,12 @@ Arrangement arrange(const Model& model, const ArrangementParams& params, const A
   a.certificate = certifyScaffold(a.scaffold);
   clock.lap("certificate");
 
-  a.quality = measureQuality(a.u, a.v, a.uCylinders, a.vCylinders, a.scaffold);
+  // The slices and cylinders taken from the earlier arrangement: their measures too.
+  a.qualityBase =
+      a.stagesTaken == 3 && earlier->qualityBase
+          ? earlier->qualityBase
+          : std::make_shared<const QualityBase>(qualityBase(a.u, a.v, a.uCylinders, a.vCylinders));
+  a.quality = measureQuality(*a.qualityBase, a.u, a.v, a.uCylinders, a.vCylinders, a.scaffold);
   clock.lap("quality");
   return a;
 }
@@ -124,7 +129,9 @@ Certificate certifyScaffold(const Scaffold& s) {
 
 void remeasure(Arrangement& a) {
   a.certificate = certifyScaffold(a.scaffold);
-  a.quality = measureQuality(a.u, a.v, a.uCylinders, a.vCylinders, a.scaffold);
+  if (!a.qualityBase)
+    a.qualityBase = std::make_shared<const QualityBase>(qualityBase(a.u, a.v, a.uCylinders, a.vCylinders));
+  a.quality = measureQuality(*a.qualityBase, a.u, a.v, a.uCylinders, a.vCylinders, a.scaffold);
 }
 
 PatchPlane patchPlane(const Arrangement& a, int patch) {

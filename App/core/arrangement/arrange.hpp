@@ -43,6 +43,7 @@ struct Arrangement {
   Scaffold scaffold;
   double minSpacing = 0;  // mm, the spacing rule in force (minPatchSpacing)
   Certificate certificate;
+  std::shared_ptr<const QualityBase> qualityBase;  // of the slices and cylinders
   Quality quality;
   std::vector<StageTime> timings;
   int stagesTaken = 0;  // of slice, reeb and gca, how many were taken from an earlier arrangement

@@ -88,22 +88,33 @@ double iou(const Region2d& a, const Region2d& b) {
   return united > 0 ? a.intersect(b).area() / united : 0;
 }
 
-Quality measureQuality(const SliceSet& u, const SliceSet& v, const std::vector<Cylinder>& uCylinders,
-                       const std::vector<Cylinder>& vCylinders, const Scaffold& scaffold) {
-  Quality q;
-  q.silhouetteIouU = iou(sliceUnion(u), patchUnion(scaffold, Family::U, uCylinders));
-  q.silhouetteIouV = iou(sliceUnion(v), patchUnion(scaffold, Family::V, vCylinders));
-
-  std::vector<Region2d::Loop> model, lattice;
+QualityBase qualityBase(const SliceSet& u, const SliceSet& v, const std::vector<Cylinder>& uCylinders,
+                        const std::vector<Cylinder>& vCylinders) {
+  QualityBase b;
+  b.uSlices = sliceUnion(u);
+  b.vSlices = sliceUnion(v);
+  std::vector<Region2d::Loop> model;
   for (const Slice& s : u.slices) addStrips(u, v, s.region, s.position, true, model);
+  b.footprint = Region2d::fromLoops(model, FillRule::NonZero);
+  b.volumeIou = std::min(volumeIou(u, uCylinders), volumeIou(v, vCylinders));
+  return b;
+}
+
+Quality measureQuality(const QualityBase& base, const SliceSet& u, const SliceSet& v,
+                       const std::vector<Cylinder>& uCylinders, const std::vector<Cylinder>& vCylinders,
+                       const Scaffold& scaffold) {
+  Quality q;
+  q.silhouetteIouU = iou(base.uSlices, patchUnion(scaffold, Family::U, uCylinders));
+  q.silhouetteIouV = iou(base.vSlices, patchUnion(scaffold, Family::V, vCylinders));
+
+  std::vector<Region2d::Loop> lattice;
   const PerFamily<const SliceSet&> sets{u, v};
   const PerFamily<const std::vector<Cylinder>&> cylinders{uCylinders, vCylinders};
   for (const ScaffoldPatch& p : scaffold.patches)
     addStrips(sets[p.family], sets[other(p.family)], cylinders[p.family][p.cylinder].section, p.position,
               p.family == Family::U, lattice);
-  q.silhouetteIouW =
-      iou(Region2d::fromLoops(model, FillRule::NonZero), Region2d::fromLoops(lattice, FillRule::NonZero));
-  q.volumeIou = std::min(volumeIou(u, uCylinders), volumeIou(v, vCylinders));
+  q.silhouetteIouW = iou(base.footprint, Region2d::fromLoops(lattice, FillRule::NonZero));
+  q.volumeIou = base.volumeIou;
   return q;
 }
 
