@@ -323,7 +323,7 @@ class Sliceform:
             finally:
                 progress.stop()
             report = json.loads(design.report_json())
-            self.designs[key] = (design, report, None, None, None)
+            self.designs[key] = (design, report, None, None, None, None)
             while len(self.designs) > self.KEEP:
                 oldest = next(iter(self.designs))
                 self.designs.pop(oldest)
@@ -378,8 +378,8 @@ class Sliceform:
         return self._current(4, make)
 
     def sheet_drawings(self, obj):
-        """Patch id -> its drawing on its sheet."""
-        return {p["id"]: p for sheet in self.sheets(obj)["sheets"] for p in sheet}
+        """Patch id -> its drawing on its sheet (asked by every sheet drawing and engraving)."""
+        return self._cached(obj, 5, lambda d: {p["id"]: p for sheet in self.sheets(obj)["sheets"] for p in sheet})
 
     # --- the feature ------------------------------------------------------------------------
 
