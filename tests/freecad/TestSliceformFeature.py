@@ -193,9 +193,12 @@ class TestSliceformFeature(unittest.TestCase):
             core.importBrepFromString(design.assembly(float(angle)))
 
             def faces(shape):
-                b = [f.BoundBox for f in shape.Faces]
-                return sorted((round(f.Area, 6),) + tuple(round(v, 6) for v in (x.XMin, x.YMin, x.ZMin, x.XMax, x.YMax, x.ZMax))
-                              for f, x in zip(shape.Faces, b))
+                """(area, box) of each face, in one order for both shapes."""
+                out = []
+                for f in shape.Faces:
+                    x = f.BoundBox
+                    out.append(tuple(round(v, 6) for v in (f.Area, x.XMin, x.YMin, x.ZMin, x.XMax, x.YMax, x.ZMax)))
+                return sorted(out)
 
             for mine, theirs in zip(faces(sliceform.Shape), faces(core)):
                 for a, b in zip(mine, theirs):
