@@ -122,6 +122,14 @@ def source_of(obj, size=0.0):
     return {"brep": shapes.brep_of(obj, size), "name": obj.Label}
 
 
+def _same_shape(a, b):
+    """Whether a and b are one shape at one placement: the same TopoDS shape (isPartner; not
+    isSame, which compares locations by identity, and Part.getShape makes a new one at every
+    call), orientation and placement, to the bit."""
+    return (a.isPartner(b) and a.Orientation == b.Orientation
+            and tuple(a.Placement.toMatrix().A) == tuple(b.Placement.toMatrix().A))
+
+
 class DesignError(Exception):
     """A failure the user can act on (bad source, parameters, or an unbuildable design):
     shown as the feature's error with the property names, never as a traceback."""
@@ -250,6 +258,8 @@ class Sliceform:
         self.designs = {}  # key -> (design, report, flat patches, sheets)
         self.unlaid = {}  # key -> the key of its inputs but the sheet's
         self.sources = {}  # key -> the key of its source
+        # (placed shape, size, source, source key) of the last CAD source read: see _inputs
+        self.last_source = None
         self.design, self.key, self.report = None, None, None
         self.posed = None  # ((the key of the patches posed, FoldAngle), the shape set then)
 
@@ -279,11 +289,29 @@ class Sliceform:
     def _inputs(self, obj):
         params = parameters.core_params(obj)
         size = params.pop("size", 0.0)
-        source = source_of(obj.Source, size)
+        source, source_key = self._source(obj.Source, size)
         # FillHoles changes the model a mesh is read into: a design of it is another source's.
         filled = params.get("fill_holes") and "points" in source
-        source_key = _source_key(source) + ("+every hole filled" if filled else "")
+        source_key += "+every hole filled" if filled else ""
         return source, params, source_key, _key(source_key, dict(params, size=size))
+
+    def _source(self, source_obj, size):
+        """source_of(source_obj, size) and its digest. A CAD source whose placed shape is the
+        very one read last time (the same TopoDS shape, which FreeCAD never changes in place:
+        a recompute of the source makes new ones, at the same placement) at the same size is not
+        written out again: at every edit its BREP was exported only to be digested
+        (occt-misc Top, Bottom, Motor-c in FreeCAD 0.20: 44-63 ms an edit). The last shape is
+        held, so no other shape can take its place in memory and seem the same."""
+        if source_obj is None or shapes.is_mesh(source_obj):
+            source = source_of(source_obj, size)
+            return source, _source_key(source)
+        shape = shapes.placed_shape(source_obj)
+        last = getattr(self, "last_source", None)
+        if last is not None and last[1] == size and _same_shape(last[0], shape):
+            return dict(last[2], name=source_obj.Label), last[3]
+        source = {"brep": shapes.brep_of_shape(shape, size), "name": source_obj.Label}
+        self.last_source = (shape, size, source, _source_key(source))
+        return source, self.last_source[3]
 
     def _made_again(self, source, params, source_key, key, progress):
         """The design for these inputs from one in memory of the same source: laid out again

@@ -9,12 +9,23 @@ def is_mesh(obj):
     return obj.isDerivedFrom("Mesh::Feature")
 
 
+def placed_shape(obj):
+    """The object's shape, placed globally (the placements of the object and its
+    containers)."""
+    shape = Part.getShape(obj)
+    if shape.isNull():
+        raise ValueError(FreeCAD.Qt.translate("Sliceform", "{} has no shape").format(obj.Label))
+    return shape
+
+
 def brep_of(obj, size=0.0):
     """The object's shape, placed globally, as a BREP string; with a size > 0, scaled about
     the centre of its box so that its longest side is that long."""
-    shape = Part.getShape(obj)  # applies the placements of the object and its containers
-    if shape.isNull():
-        raise ValueError(FreeCAD.Qt.translate("Sliceform", "{} has no shape").format(obj.Label))
+    return brep_of_shape(placed_shape(obj), size)
+
+
+def brep_of_shape(shape, size=0.0):
+    """brep_of for a shape placed already."""
     box = shape.BoundBox
     longest = max(box.XLength, box.YLength, box.ZLength)
     if size > 0 and longest > 0:

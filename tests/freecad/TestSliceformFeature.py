@@ -226,6 +226,12 @@ class TestSliceformFeature(unittest.TestCase):
         calls = []
         design = sliceform_native.design
         sliceform_native.design = lambda *a, **k: calls.append(a) or design(*a, **k)
+        # The source, the same shape at every edit of the feature's own properties, is
+        # written out (BREP) only when it changes.
+        from sliceform_app import shapes
+
+        written, brep_of_shape = [], shapes.brep_of_shape
+        shapes.brep_of_shape = lambda *a: written.append(a) or brep_of_shape(*a)
         try:
             self.edit("Edit SheetSize", lambda: setattr(sliceform, "SheetSize", "A3"))
             self.edit("Edit Margin", lambda: setattr(sliceform, "Margin", 15))
@@ -262,10 +268,14 @@ class TestSliceformFeature(unittest.TestCase):
             cuts = [p["loops"] for p in sliceform.Proxy.ensure_design(sliceform).flat_patches()]
             self.assertEqual(cuts, [p["loops"] for p in kerfed.flat_patches()])
             self.assertNotEqual(cuts, [p["loops"] for p in design(source, dict(params, kerf=0)).flat_patches()])
+            self.assertEqual(written, [])
             self.edit("Edit Length", lambda: setattr(box, "Length", 110))
             self.assertEqual(len(calls), 1)
+            self.assertEqual(len(written), 1)
+            self.assertAlmostEqual(sliceform.Shape.BoundBox.XLength, 110, delta=1)
         finally:
             sliceform_native.design = design
+            shapes.brep_of_shape = brep_of_shape
 
     def test_sheet_edit_keeps_the_pose(self):
         """A margin or kerf edit lays the same patches out again: the feature's shape stays the
