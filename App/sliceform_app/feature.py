@@ -258,7 +258,7 @@ class Sliceform:
         self.designs = {}  # key -> (design, report, flat patches, sheets)
         self.unlaid = {}  # key -> the key of its inputs but the sheet's
         self.sources = {}  # key -> the key of its source
-        # (placed shape, size, source, source key) of the last CAD source read: see _inputs
+        # (placed shape, size, source, source key) of the last CAD source read: see _source
         self.last_source = None
         self.design, self.key, self.report = None, None, None
         self.posed = None  # ((the key of the patches posed, FoldAngle), the shape set then)
@@ -300,7 +300,7 @@ class Sliceform:
         very one read last time (the same TopoDS shape, which FreeCAD never changes in place:
         a recompute of the source makes new ones, at the same placement) at the same size is not
         written out again: at every edit its BREP was exported only to be digested
-        (occt-misc Top, Bottom, Motor-c in FreeCAD 0.20: 44-63 ms an edit). The last shape is
+        (occt-misc Top, Bottom, Motor-c in FreeCAD 0.20 and 1.0: 44-98 ms an edit). The last shape is
         held, so no other shape can take its place in memory and seem the same."""
         if source_obj is None or shapes.is_mesh(source_obj):
             source = source_of(source_obj, size)
