@@ -9,6 +9,7 @@ Run through TestSliceform (tests/freecad/run.sh)."""
 import json
 import math
 import os
+import re
 import tempfile
 import unittest
 
@@ -575,6 +576,41 @@ class TestSliceformChildren(unittest.TestCase):
         self.check_children(sliceform)
         now = {v.Name: v.ID for p in lookup.pages_of(sliceform) for v in p.Views}
         self.assertEqual(now, ids)
+
+    def test_techdraw_dxf_draws_every_line_where_the_sheet_has_it(self):
+        """TechDraw's DXF of a page, after a Margin edit laid the patches out again: every
+        LINE starts where the sheet's own drawing (Design.sheets) has a corner of a cut or
+        a stroke, to 2 µm (the DXF's digits), so a laser cuts and engraves what the core
+        drew, where it drew it."""
+        import TechDraw
+        from TestSliceformFeature import wait_for_views
+        from sliceform_app import lookup
+
+        _box, cut = self.box_with_hole()
+        sliceform = self.create(cut)
+        FreeCAD.setActiveTransaction("Edit Margin")
+        sliceform.Margin = 14
+        self.doc.recompute()
+        FreeCAD.closeActiveTransaction()
+        self.check_children(sliceform)
+        page = lookup.pages_of(sliceform)[0]
+        wait_for_views(page)
+        path = os.path.join(tempfile.mkdtemp(), "sheet.dxf")
+        TechDraw.writeDXFPage(page, path)
+        corners = set()
+        for d in sliceform.Proxy.sheets(sliceform)["sheets"][0]:
+            for stroke in d["engrave"]:
+                corners.update((round(x, 3), round(y, 3)) for x, y in stroke)
+            for loop in d["cut"]:
+                for e in loop:
+                    corners.update((round(e[k][0], 3), round(e[k][1], 3)) for k in ("a", "b") if k in e)
+        with open(path) as f:
+            text = f.read()
+        starts = re.findall(r"\nLINE\n(?:.*\n)*? 10\n([-\d.eE+]+)\n 20\n([-\d.eE+]+)\n", text)
+        self.assertGreater(len(starts), 20)
+        for x, y in starts:
+            near = min(abs(round(float(x), 3) - cx) + abs(round(float(y), 3) - cy) for cx, cy in corners)
+            self.assertLess(near, 0.002, (x, y))
 
     def test_a_sheets_engraving_from_an_earlier_document_gives_way(self):
         """A document made when each page had one engraving for the whole sheet (linking the
