@@ -13,7 +13,7 @@ import json
 import FreeCAD
 import Part
 
-from sliceform_app import geometry, lookup, native, observer, parameters, settling, shapes, syncing
+from sliceform_app import geometry, native, observer, parameters, shapes, syncing
 
 observer.install_observer()
 
@@ -456,15 +456,6 @@ class Sliceform:
 
     def execute(self, obj):
         restore_traceback()
-        # FreeCAD 1.0 draws a TechDraw view in threads, and a view recomputed while it is
-        # still drawing keeps that drawing (DrawViewPart::execute returns while it waits for
-        # it) and never draws what changed: an edit made before the sheets of the last one
-        # were drawn left the pages, and TechDraw's DXF of them, showing the layout before
-        # (a Margin edit right after the sliceform was made: 726 of 727 lines of a page's DXF
-        # where the old layout had them). This recompute redraws the views: the drawing of
-        # before is let finish first. FreeCAD 0.20 draws inside the recompute: nothing waits.
-        if settling.may_be_drawing([v for page in lookup.pages_of(obj) for v in page.Views]):
-            settling.settle_views()
         try:
             self._execute(obj)
         except DesignError:

