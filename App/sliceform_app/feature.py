@@ -100,26 +100,22 @@ def _old_children(objects):
     return out
 
 
-def source_of(obj, size=0.0):
-    """What the core takes for a source object: triangles for meshes, a BREP otherwise,
-    both in global placement. A size > 0 scales the source about the centre of its box so
-    that its longest side is that long: the sliceform stands where the source is."""
-    if obj is None:
-        raise DesignError(QT_TRANSLATE_NOOP("Sliceform", "the sliceform has no Source: link a solid, body or mesh"))
-    if shapes.is_mesh(obj):
-        points, triangles = shapes.mesh_lists_of(obj)
-        if size > 0 and points:
-            # Coordinate by coordinate, not point by point with a generator each: the same
-            # numbers, a third of the time (fandisk: 10 of the 16 ms every edit spends here).
-            columns = list(zip(*points))
-            lo, hi = [min(c) for c in columns], [max(c) for c in columns]
-            longest = max(h - l for h, l in zip(hi, lo))
-            if longest > 0:
-                f = size / longest
-                cx, cy, cz = [(h + l) / 2 for h, l in zip(hi, lo)]
-                points = [(cx + (x - cx) * f, cy + (y - cy) * f, cz + (z - cz) * f) for x, y, z in points]
-        return {"points": points, "triangles": triangles, "name": obj.Label}
-    return {"brep": shapes.brep_of(obj, size), "name": obj.Label}
+def mesh_source(obj, size=0.0):
+    """What the core takes for a mesh source: its triangles in global placement. A size > 0
+    scales it about the centre of its box so that its longest side is that long: the
+    sliceform stands where the source is (a CAD source: Sliceform._source)."""
+    points, triangles = shapes.mesh_lists_of(obj)
+    if size > 0 and points:
+        # Coordinate by coordinate, not point by point with a generator each: the same
+        # numbers, a third of the time (fandisk: 10 of the 16 ms every edit spends here).
+        columns = list(zip(*points))
+        lo, hi = [min(c) for c in columns], [max(c) for c in columns]
+        longest = max(h - l for h, l in zip(hi, lo))
+        if longest > 0:
+            f = size / longest
+            cx, cy, cz = [(h + l) / 2 for h, l in zip(hi, lo)]
+            points = [(cx + (x - cx) * f, cy + (y - cy) * f, cz + (z - cz) * f) for x, y, z in points]
+    return {"points": points, "triangles": triangles, "name": obj.Label}
 
 
 def _same_shape(a, b):
@@ -255,7 +251,8 @@ class Sliceform:
         self._forget()
 
     def _forget(self):
-        self.designs = {}  # key -> (design, report, flat patches, sheets)
+        # key -> (design, report, flat patches, sheets, local faces, drawings by patch id)
+        self.designs = {}
         self.unlaid = {}  # key -> the key of its inputs but the sheet's
         self.sources = {}  # key -> the key of its source
         # (placed shape, size, source, source key) of the last CAD source read: see _source
@@ -296,14 +293,19 @@ class Sliceform:
         return source, params, source_key, _key(source_key, dict(params, size=size))
 
     def _source(self, source_obj, size):
-        """source_of(source_obj, size) and its digest. A CAD source whose placed shape is the
+        """What the core takes for the source (mesh_source, or a BREP for a CAD source, both
+        in global placement and sized) and its digest. A CAD source whose placed shape is the
         very one read last time (the same TopoDS shape, which FreeCAD never changes in place:
         a recompute of the source makes new ones, at the same placement) at the same size is not
         written out again: at every edit its BREP was exported only to be digested
         (occt-misc Top, Bottom, Motor-c in FreeCAD 0.20 and 1.0: 44-98 ms an edit). The last shape is
         held, so no other shape can take its place in memory and seem the same."""
-        if source_obj is None or shapes.is_mesh(source_obj):
-            source = source_of(source_obj, size)
+        if source_obj is None:
+            raise DesignError(
+                QT_TRANSLATE_NOOP("Sliceform", "the sliceform has no Source: link a solid, body or mesh")
+            )
+        if shapes.is_mesh(source_obj):
+            source = mesh_source(source_obj, size)
             return source, _source_key(source)
         shape = shapes.placed_shape(source_obj)
         last = getattr(self, "last_source", None)
