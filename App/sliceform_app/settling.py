@@ -4,21 +4,33 @@ faces, in Qt's global thread pool and finishes the job in the view when the resu
 through the event loop; a view removed meanwhile gets that call with no name in the document
 and throws (std::logic_error through the event loop: headless, a crashed interpreter). So a
 view is removed only once it is known to draw nothing: settled, or recomputed from an empty
-source since (DrawViewPart::execute then returns before starting a thread). FreeCAD 0.20
-draws inside the recompute: nothing is ever left drawing."""
+source since (DrawViewPart::execute then returns before starting a thread). And a view
+recomputed while it still finds hidden lines returns at once: it keeps what that pass finds
+for good, so one recomputed then with other sources is recomputed again once the views
+settled. FreeCAD 0.20 draws inside the recompute: nothing is ever left drawing."""
 import time
 
 import FreeCAD
 
-# Only FreeCAD 1.0 draws an empty source without complaint: 0.20 marks that view invalid.
-BLANK_LEFT_OVERS = tuple(int(x) for x in FreeCAD.Version()[:2]) >= (1, 0)
+# Only FreeCAD 1.0 draws in threads, and draws an empty source without complaint (0.20
+# marks that view invalid).
+THREADED = BLANK_LEFT_OVERS = tuple(int(x) for x in FreeCAD.Version()[:2]) >= (1, 0)
 
-# (document name, view name) of the views that may still be drawing: recomputed with
-# something to draw, or restored with the document, since the views last settled. A Slices
-# edit on fandisk removes one or two engraving views whose parts are no longer needed; waiting
-# for every view of the edit before that took 0.16-0.22 s of FreeCAD 1.0's 0.74 s.
-_drawing = set()
+# The views that may still be drawing, (document name, view name) -> what their sources gave
+# them when they began (_given): recomputed with something to draw, or restored with the
+# document, since the views last settled. A Slices edit on fandisk removes one or two
+# engraving views whose parts are no longer needed; waiting for every view of the edit
+# before that took 0.16-0.22 s of FreeCAD 1.0's 0.74 s.
+_drawing = {}
+# Views recomputed, while they may still have been drawing, with sources that give something
+# else (DrawViewPart::execute returns at once then): a Margin edit right after the sliceform
+# was made left 726 of a page's 727 DXF lines where the layout before had them, after any
+# wait. They are recomputed again once every view settled. A view that is only moved is
+# recomputed too (the sync moves 104 of the box's 130 views at a Margin edit, after their
+# drawings changed): what its sources give then decides, not that it was recomputed.
+_stale = set()
 _timer = None
+_UNKNOWN = object()  # what sources the sliceform did not make gave, or a restored view drew
 
 
 def empty(shape):
@@ -33,25 +45,68 @@ def _blank(source):
     return getattr(getattr(source, "Proxy", None), "blank", False) and empty(source.Shape)
 
 
+def _given(view):
+    """What the view's sources give it, without reading a Shape: a sheet drawing's proxy
+    says what it was last built from (`built`: the design, patch and part) and whether it was
+    emptied. _UNKNOWN where a source is not a sheet drawing."""
+    given = []
+    for source in view.Source:
+        proxy = getattr(source, "Proxy", None)
+        if getattr(proxy, "Type", None) not in ("SliceformSheetPatch", "SliceformEngraving"):
+            return _UNKNOWN
+        given.append((source.Name, getattr(proxy, "built", None), getattr(proxy, "blank", False)))
+    return tuple(given)
+
+
 def view_recomputed(view):
     """The document observer's report of a recomputed view."""
-    if not all(_blank(source) for source in view.Source):
-        _add([view])
+    key = (view.Document.Name, view.Name)
+    if key in _drawing:
+        # It goes on drawing what it began with: an empty source too leaves the old patch.
+        given = _given(view)
+        if THREADED and (given is _UNKNOWN or given != _drawing[key]):
+            _stale.add(key)
+    elif not all(_blank(source) for source in view.Source):
+        _add([view], _given)
 
 
 def views_restored(views):
     """Views of a document being opened: FreeCAD draws them without a recompute."""
-    _add(views)
+    _add(views, lambda view: _UNKNOWN)
 
 
 def may_be_drawing(views):
     return any((v.Document.Name, v.Name) in _drawing for v in views)
 
 
-def _add(views):
-    _drawing.update((v.Document.Name, v.Name) for v in views)
+def _add(views, given):
+    for v in views:
+        _drawing.setdefault((v.Document.Name, v.Name), given(v))
     if FreeCAD.GuiUp and _drawing:
         _watch()
+
+
+def _settled():
+    """Every view drew what it was last given, unless one was recomputed while it still
+    drew: those are recomputed now (and draw again). Returns whether none was."""
+    stale = sorted(_stale)
+    _forget()
+    views = [v for v in (_view(doc, name) for doc, name in stale) if v is not None]
+    for view in views:
+        view.touch()
+        view.recompute()
+    _add(views, _given)
+    return not views
+
+
+def _forget():
+    _drawing.clear()
+    _stale.clear()
+
+
+def _view(doc_name, name):
+    doc = FreeCAD.listDocuments().get(doc_name)
+    return doc.getObject(name) if doc is not None else None
 
 
 def _watch():
@@ -68,8 +123,8 @@ def _watch():
         def check():
             _timer.idle = _timer.idle + 1 if QtCore.QThreadPool.globalInstance().activeThreadCount() == 0 else 0
             if _timer.idle >= 2:
-                _drawing.clear()
                 _timer.stop()
+                _settled()  # watches again if it recomputed a view
 
         _timer.timeout.connect(check)
     _timer.idle = 0
@@ -82,12 +137,10 @@ def settle_views(seconds=60):
     try:
         from PySide import QtCore
     except ImportError:
-        _drawing.clear()
-        return
+        return _forget()
     app = QtCore.QCoreApplication.instance()
     if app is None:  # no event loop to deliver a result: nothing draws in threads
-        _drawing.clear()
-        return
+        return _forget()
     pool = QtCore.QThreadPool.globalInstance()
     deadline = time.monotonic() + seconds
     while time.monotonic() < deadline:
@@ -96,6 +149,5 @@ def settle_views(seconds=60):
         app.processEvents(QtCore.QEventLoop.ExcludeUserInputEvents)
         if pool.activeThreadCount() == 0:
             app.processEvents(QtCore.QEventLoop.ExcludeUserInputEvents)
-            if pool.activeThreadCount() == 0:
-                _drawing.clear()
+            if pool.activeThreadCount() == 0 and _settled():
                 return

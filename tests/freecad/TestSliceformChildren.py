@@ -581,15 +581,15 @@ class TestSliceformChildren(unittest.TestCase):
         """TechDraw's DXF of a page, after a Margin edit laid the patches out again: every
         LINE starts where the sheet's own drawing (Design.sheets) has a corner of a cut or
         a stroke, to 2 µm (the DXF's digits), so a laser cuts and engraves what the core
-        drew, where it drew it. (In FreeCAD 1.0 the views are let finish drawing before the
-        edit: a view recomputed while it still draws keeps its old drawing, docs/decisions.md.)"""
+        drew, where it drew it. The edit comes while FreeCAD 1.0 still draws the new views:
+        a view recomputed then keeps its first drawing unless it is recomputed again once it
+        settled (settling.py); without that, 726 of 727 lines stayed where they were."""
         import TechDraw
         from TestSliceformFeature import wait_for_views
         from sliceform_app import lookup, settling
 
         _box, cut = self.box_with_hole()
         sliceform = self.create(cut)
-        settling.settle_views()
         FreeCAD.setActiveTransaction("Edit Margin")
         sliceform.Margin = 14
         self.doc.recompute()
