@@ -3,7 +3,8 @@
 # Xvfb, through the real commands and dialogs: Create; the task panel's Recompute with a
 # new patch and sheet count, then Cancel, restores the document and the Undo stack, and
 # with OK is one Undo step that takes it all back; once Qt's loop has run the views' threads
-# they no longer count as drawing (a sync removes a view that draws nothing at once); an edit
+# they no longer count as drawing (a sync removes a view that draws nothing at once); two
+# edits while the sheets draw leave TechDraw's DXF with the last layout; an edit
 # of the source as the property editor makes it, lowering the count, is one Undo step;
 # Delete removes the children and shows the source again, Undo brings all back; after
 # save and reopen no TechDraw page opens by itself, nothing is marked for recompute, the
@@ -11,11 +12,17 @@
 # work at once. Writes "ok" or the failure to $SLICEFORM_CHILDREN_RESULT.
 import gc
 import os
+import sys
 import tempfile
+import threading
+import time
 import traceback
 
 import FreeCAD
 import FreeCADGui
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import dxf_lines  # noqa: E402  (beside this script)
 
 result_path = os.environ["SLICEFORM_CHILDREN_RESULT"]
 
@@ -55,6 +62,26 @@ def click_away_dialogs(answer):
             QtCore.QTimer.singleShot(50, press)
 
     QtCore.QTimer.singleShot(50, press)
+
+
+def _hold_class():
+    from PySide import QtCore
+
+    class Hold(QtCore.QRunnable):
+        """Keeps one of Qt's pool threads busy until `gate` is set."""
+
+        def __init__(self, gate):
+            super().__init__()
+            self.gate = gate
+            self.setAutoDelete(False)
+
+        def run(self):
+            self.gate.wait(20)
+
+    return Hold
+
+
+Hold = _hold_class()
 
 
 def wait(ms=300):
@@ -237,6 +264,42 @@ try:
     wait(800)
     drawn = [v for p in lookup.pages_of(sliceform) for v in p.Views]
     assert drawn and not settling.may_be_drawing(drawn), "views still counted as drawing"
+
+    # 1c. Two Margin edits while the sheets still draw (FreeCAD 1.0 draws them in Qt's thread
+    # pool, and a view recomputed meanwhile keeps its first drawing unless settling.py draws
+    # it again): once Qt's loop has run them, TechDraw's DXF of the page draws the last
+    # layout. The pool is held busy over both edits, so that the first edit's drawings are
+    # still to come at the second whatever the machine's speed (a recompute runs Qt's loop
+    # for its progress bar, which may deliver a quick drawing); 0.20 draws in the recompute.
+    pool = QtCore.QThreadPool.globalInstance()
+    gate = threading.Event()
+    holds = [Hold(gate) for _ in range(pool.maxThreadCount())]
+    for hold in holds:
+        pool.start(hold)
+    try:
+        for margin in (11, 12):
+            FreeCAD.setActiveTransaction("Edit Margin")
+            sliceform.Margin = margin
+            doc.recompute()
+            FreeCAD.closeActiveTransaction()
+        assert sliceform.SheetCount == before["results"][1], sliceform.SheetCount  # no view removed
+    finally:
+        gate.set()
+    FreeCADGui.updateGui()
+    settled_by = time.monotonic() + 60
+    while settling.may_be_drawing([v for p in lookup.pages_of(sliceform) for v in p.Views]):
+        assert time.monotonic() < settled_by, "the views still draw after 60 s"
+        wait(200)
+    away, lines = dxf_lines.lines_away(sliceform)
+    assert lines > 20 and not away, "{} of the page's {} DXF lines where the sheet has none: {}".format(
+        len(away), lines, away[:3])
+    for _ in range(2):
+        FreeCADGui.runCommand("Std_Undo")
+    doc.recompute()
+    FreeCADGui.updateGui()
+    undone = snapshot(doc, sliceform)
+    for key in ("objects", "views", "patches", "results", "touched"):
+        assert undone[key] == before[key], "Undo of the Margin edits: {} {} -> {}".format(key, before[key], undone[key])
 
     # 2. The source edited as the property editor does it, lowering the count.
     FreeCAD.setActiveTransaction("Edit Box Height")
