@@ -413,6 +413,40 @@ TEST(BrepSlicer, FaceByFaceTakesAPlaneGrazingABore) {
   EXPECT_NE(made.back().route, SectionRoute::FaceByFace);
 }
 
+// A plane that cuts a B-spline face only in a sliver along its border, thinner than a cell
+// of the trace's grid: the trace finds no contour, though the plane crosses the face's
+// edge twice. Every crossing must end a piece of the face's section, so the route has OCCT
+// cut that face alone, and the plane stays face by face (occ/Top.brep, directions auto:
+// such a plane went to the solid's section and its Common, 0.4 s of 0.9). The loft's top
+// rim (a circle of 6 mm at z = 20) is cut 2 and 8 µm below its highest point along planes
+// tilted 0.5 rad, turned every 15 degrees about Z: the trace's grid, 1.2 mm along the rim,
+// falls in beside some of the slivers and not others.
+TEST(BrepSlicer, FaceByFaceCutsAloneAFaceWhoseSliverTheTraceMisses) {
+  const TopoDS_Shape loft = test::loft();
+  const double tilt = 0.5;
+  int planes = 0;
+  for (int k = 0; k < 24; ++k) {
+    const double turn = k * M_PI / 12;
+    const Vec3 n{std::sin(tilt) * std::cos(turn), std::sin(tilt) * std::sin(turn), std::cos(tilt)};
+    const SliceFrame frame = makeSliceFrame(n);
+    const double top = 20 * std::cos(tilt) + 6 * std::sin(tilt);  // the rim's highest point
+    const std::vector<double> positions{top - 2e-3, top - 8e-3};
+    const std::vector<ExactSlice> made = sliceBrep(loft, frame, positions, 1e-4);
+    const std::vector<ExactSlice> common =
+        sliceBrep(loft, frame, positions, 1e-4, SliceDetail::Measured, SectionRoute::Common);
+    for (size_t i = 0; i < positions.size(); ++i, ++planes) {
+      SCOPED_TRACE("turned " + std::to_string(k * 15) + " degrees, " + std::to_string(top - positions[i]) +
+                   " mm below the rim");
+      EXPECT_EQ(made[i].route, SectionRoute::FaceByFace);
+      ASSERT_FALSE(made[i].faces.IsNull());
+      ASSERT_GT(common[i].area, 0);
+      EXPECT_NEAR(made[i].area, common[i].area, 1e-3 * common[i].area);
+      EXPECT_EQ(made[i].region.components().size(), 1u);
+    }
+  }
+  EXPECT_EQ(planes, 48);
+}
+
 // Where the face-by-face route would have to guess it leaves the plane to the section
 // curves: a plane through a vertex of the solid (every corner of a box at z = 0 and 10)
 // and a plane on a face. The faces are still the Common's.
