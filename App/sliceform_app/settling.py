@@ -25,9 +25,9 @@ _drawing = {}
 # Views recomputed, while they may still have been drawing, with sources that give something
 # else (DrawViewPart::execute returns at once then): a Margin edit right after the sliceform
 # was made left 726 of a page's 727 DXF lines where the layout before had them, after any
-# wait. They are recomputed again once every view settled. A view that is only moved is
-# recomputed too (the sync moves 104 of the box's 130 views at a Margin edit, after their
-# drawings changed): what its sources give then decides, not that it was recomputed.
+# wait. They are recomputed again once every view settled. What the sources give decides,
+# not that the view was recomputed: a Margin edit on the box recomputes 104 of its 130 views
+# twice (their drawings change, then the sync moves them), with the same sources.
 _stale = set()
 _timer = None
 _UNKNOWN = object()  # what sources the sliceform did not make gave, or a restored view drew
@@ -66,7 +66,9 @@ def view_recomputed(view):
         given = _given(view)
         if THREADED and (given is _UNKNOWN or given != _drawing[key]):
             _stale.add(key)
-    elif not all(_blank(source) for source in view.Source):
+        return
+    _stale.discard(key)  # drawn afresh, from what its sources give now
+    if not all(_blank(source) for source in view.Source):
         _add([view], _given)
 
 
@@ -87,11 +89,18 @@ def _add(views, given):
 
 
 def _settled():
-    """Every view drew what it was last given, unless one was recomputed while it still
-    drew: those are recomputed now (and draw again). Returns whether none was."""
-    stale = sorted(_stale)
-    _forget()
-    views = [v for v in (_view(doc, name) for doc, name in stale) if v is not None]
+    """Every view drew what it was last given: none counts as drawing any more. Those
+    recomputed while they still drew are recomputed now (and draw again), unless a document
+    is recomputing or being opened (Qt's loop turns inside a recompute, for its progress
+    bar): then they stay stale until the views next settle. Returns whether none was
+    recomputed."""
+    _drawing.clear()
+    if any(d.Recomputing or d.Restoring for d in FreeCAD.listDocuments().values()):
+        if _stale and FreeCAD.GuiUp:
+            _watch()
+        return True
+    views = [v for v in (_view(doc, name) for doc, name in sorted(_stale)) if v is not None]
+    _stale.clear()
     for view in views:
         view.touch()
         view.recompute()

@@ -218,8 +218,9 @@ std::vector<std::optional<std::vector<FaceByFace::AloneEdge>>> cutAlone(const To
 // another edge of the face's section (a curve split inside the face, a closed curve's own
 // vertex); an end near two is unsure. And every crossing must end an edge: the face's
 // section meets its boundary there. The trace misses a contour that stays within one cell
-// of its grid (occ/Top.brep, directions auto: a B-spline face cut 0.4 mm along its border,
-// at one of 107 planes, which then took the solid's section and its Common, 0.4 s).
+// of its grid (occ/Top.brep, directions auto: a B-spline face cut in a sliver 0.43 mm long
+// at its border, at one of 107 planes, which then took the solid's section and its Common,
+// 0.4 s).
 bool joinAtCrossings(const std::vector<FaceByFace::AloneEdge>& edges, const std::vector<Crossing>& crossings,
                      Handle(TopTools_HSequenceOfShape) out) {
   std::map<const TopoDS_TShape*, int> uses;  // how many ends each vertex is
