@@ -447,6 +447,39 @@ TEST(BrepSlicer, FaceByFaceCutsAloneAFaceWhoseSliverTheTraceMisses) {
   EXPECT_EQ(planes, 48);
 }
 
+// A plane through a sample the route takes of a B-spline edge (within the edge's tolerance
+// of it) where the edge crosses the plane: the samples either side lie across the plane,
+// so the two steps are one with one crossing, and the plane stays face by face
+// (occ/Motor-c.brep in its auto frame: a sample 48 nm from one of 62 U planes). The loft's
+// seam is a B-spline edge from its bottom circle to its top one; the samples are the
+// route's own (clamp(4 poles, 64, 1024) steps of its parameter, slicing/face_by_face.cpp).
+TEST(BrepSlicer, FaceByFaceTakesAPlaneThroughASampleOfAnEdge) {
+  const TopoDS_Shape loft = test::loft();
+  std::vector<double> at;  // z of seam samples in the loft's middle, nudged within tolerance
+  TopTools_IndexedMapOfShape edges;
+  TopExp::MapShapes(loft, TopAbs_EDGE, edges);
+  for (int k = 1; k <= edges.Extent(); ++k) {
+    const TopoDS_Edge& edge = TopoDS::Edge(edges(k));
+    const BRepAdaptor_Curve c(edge);
+    const double t0 = c.FirstParameter(), t1 = c.LastParameter();
+    if (c.GetType() != GeomAbs_BSplineCurve || std::abs(c.Value(t1).Z() - c.Value(t0).Z()) < 10) continue;
+    const int samples = std::clamp(4 * c.NbPoles(), 64, 1024);
+    for (const int i : {samples / 3, samples / 2, 2 * samples / 3})
+      at.push_back(c.Value(t0 + (t1 - t0) * i / samples).Z() + 0.2 * BRep_Tool::Tolerance(edge));
+  }
+  ASSERT_EQ(at.size(), 3u);  // the one seam
+  const SliceFrame frame = makeSliceFrame({0, 0, 1});
+  const std::vector<ExactSlice> made = sliceBrep(loft, frame, at, 1e-4);
+  const std::vector<ExactSlice> common =
+      sliceBrep(loft, frame, at, 1e-4, SliceDetail::Measured, SectionRoute::Common);
+  for (size_t i = 0; i < at.size(); ++i) {
+    SCOPED_TRACE("z = " + std::to_string(at[i]));
+    EXPECT_EQ(made[i].route, SectionRoute::FaceByFace);
+    // The traced contour within 1 µm of the face (SectionRoutesMakeTheFacesOfSolidsWithHoles).
+    EXPECT_NEAR(made[i].area, common[i].area, 1e-3 * perimeter(made[i].faces));
+  }
+}
+
 // Where the face-by-face route would have to guess it leaves the plane to the section
 // curves: a plane through a vertex of the solid (every corner of a box at z = 0 and 10)
 // and a plane on a face. The faces are still the Common's.

@@ -96,12 +96,19 @@ bool crossings(const TopoDS_Edge& edge, double edgeTolerance, const gp_Dir& n, d
     return true;
   }
   // Any other curve: sign changes between samples, found by bisection. A sample on the
-  // plane is a touch or a crossing this cannot tell apart.
+  // plane is a touch, or a crossing at it: where the next sample lies across the plane from
+  // the one before, the two steps are one, with one crossing, as between any two samples;
+  // else unsure (a touch, or two crossings). occ/Motor-c.brep in its auto frame: a B-spline
+  // edge's sample 48 nm from one U plane of 62 sent that plane to the section, 0.07 s.
   const int samples = type == GeomAbs_BSplineCurve ? std::clamp(4 * c.NbPoles(), 64, 1024) : 64;
+  const auto sample = [&](int i) { return i == samples ? t1 : t0 + (t1 - t0) * i / samples; };
   double ta = t0, fa = f0;
   for (int i = 1; i <= samples; ++i) {
-    const double tb = i == samples ? t1 : t0 + (t1 - t0) * i / samples, fb = i == samples ? f1 : f(tb);
-    if (std::abs(fb) <= tolerance) return false;
+    double tb = sample(i), fb = i == samples ? f1 : f(tb);
+    if (std::abs(fb) <= tolerance) {  // never the last: f1 is not on the plane
+      tb = sample(++i), fb = i == samples ? f1 : f(tb);
+      if (std::abs(fb) <= tolerance || (fa < 0) == (fb < 0)) return false;
+    }
     if ((fa < 0) != (fb < 0)) {
       double lo = ta, hi = tb, flo = fa;
       for (int k = 0; k < 100 && hi - lo > 1e-15 * (std::abs(lo) + 1); ++k) {
