@@ -40,6 +40,18 @@ def snapshot(doc, sliceform):
     }
 
 
+def undo_back_to(doc, sliceform, before, steps, what):
+    """Undoes `steps` steps with the Undo command and checks that the document, its views,
+    patches and results are as `before` (a snapshot), nothing left marked for recompute."""
+    for _ in range(steps):
+        FreeCADGui.runCommand("Std_Undo")
+    doc.recompute()
+    FreeCADGui.updateGui()
+    undone = snapshot(doc, sliceform)
+    for key in ("objects", "views", "patches", "results", "touched"):
+        assert undone[key] == before[key], "Undo of {}: {} {} -> {}".format(what, key, before[key], undone[key])
+
+
 def page_windows():
     from PySide import QtGui
 
@@ -252,12 +264,7 @@ try:
     assert kept["results"][:2] == (22, 1) and len(kept["patches"]) == 22, kept["results"][:2]
     assert kept["touched"] == [], kept["touched"]
     assert doc.UndoNames == ["Edit sliceform", "Create sliceform"], doc.UndoNames
-    FreeCADGui.runCommand("Std_Undo")
-    doc.recompute()
-    FreeCADGui.updateGui()
-    undone = snapshot(doc, sliceform)
-    for key in ("objects", "views", "patches", "results", "touched"):
-        assert undone[key] == before[key], "Undo of OK: {} {} -> {}".format(key, before[key], undone[key])
+    undo_back_to(doc, sliceform, before, 1, "OK")
 
     # The views drawn so far count as settled once Qt's loop has run their threads (the
     # timer of settling._watch): a sync may then remove a view that draws nothing at once.
@@ -293,13 +300,7 @@ try:
     away, lines = dxf_lines.lines_away(sliceform)
     assert lines > 20 and not away, "{} of the page's {} DXF lines where the sheet has none: {}".format(
         len(away), lines, away[:3])
-    for _ in range(2):
-        FreeCADGui.runCommand("Std_Undo")
-    doc.recompute()
-    FreeCADGui.updateGui()
-    undone = snapshot(doc, sliceform)
-    for key in ("objects", "views", "patches", "results", "touched"):
-        assert undone[key] == before[key], "Undo of the Margin edits: {} {} -> {}".format(key, before[key], undone[key])
+    undo_back_to(doc, sliceform, before, 2, "the Margin edits")
 
     # 2. The source edited as the property editor does it, lowering the count.
     FreeCAD.setActiveTransaction("Edit Box Height")
@@ -310,12 +311,7 @@ try:
     assert sliceform.PatchCount == 6, sliceform.PatchCount
     assert len(lookup.patches_of(sliceform)) == 6, len(lookup.patches_of(sliceform))
     assert doc.UndoNames == ["Edit Box Height", "Create sliceform"], doc.UndoNames
-    FreeCADGui.runCommand("Std_Undo")
-    doc.recompute()
-    FreeCADGui.updateGui()
-    undone = snapshot(doc, sliceform)
-    for key in ("objects", "views", "patches", "results", "touched"):
-        assert undone[key] == before[key], "Undo of the edit: {} {} -> {}".format(key, before[key], undone[key])
+    undo_back_to(doc, sliceform, before, 1, "the edit")
 
     # 3. Delete: the children go, the source shows again; one Undo brings all back.
     FreeCADGui.Selection.clearSelection()
