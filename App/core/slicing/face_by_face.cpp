@@ -99,7 +99,7 @@ bool crossings(const TopoDS_Edge& edge, double edgeTolerance, const gp_Dir& n, d
   // plane is a touch, or a crossing at it: where the next sample lies across the plane from
   // the one before, the two steps are one, with one crossing, as between any two samples;
   // else unsure (a touch, or two crossings). occ/Motor-c.brep in its auto frame: a B-spline
-  // edge's sample 48 nm from one U plane of 62 sent that plane to the section, 0.07 s.
+  // edge's sample 48 nm from one U plane of 62 sent that plane to the section (20 ms).
   const int samples = type == GeomAbs_BSplineCurve ? std::clamp(4 * c.NbPoles(), 64, 1024) : 64;
   const auto sample = [&](int i) { return i == samples ? t1 : t0 + (t1 - t0) * i / samples; };
   double ta = t0, fa = f0;
