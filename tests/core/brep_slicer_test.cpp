@@ -480,6 +480,28 @@ TEST(BrepSlicer, FaceByFaceTakesAPlaneThroughASampleOfAnEdge) {
   }
 }
 
+// A loose edge's tolerance reaches more than one curve of a face's section: a plane along a
+// cylinder near its side cuts it in two lines 0.89 mm apart, and the rims' crossings, each
+// on one line, lie within the 1 mm the edges claim of the other too. Each crossing ends a
+// piece of the nearer line only, and the plane stays face by face (occ/MODERN_Sink_1.brep:
+// edges claiming 3 mm, three V planes of 52 went to the section). The section is the
+// rectangle between the lines.
+TEST(BrepSlicer, FaceByFaceGivesACrossingOfALooseEdgeToTheNearerCurve) {
+  const TopoDS_Shape cylinder =
+      BRepPrimAPI_MakeCylinder(gp_Ax2(gp_Pnt(0, 0, 0), gp_Dir(0, 0, 1)), 10, 30).Shape();
+  test::loosen(cylinder, 1.0);
+  const SliceFrame frame = makeSliceFrame({1, 0, 0});
+  const std::vector<double> positions{9.99, 9.995};
+  const std::vector<ExactSlice> made = sliceBrep(cylinder, frame, positions, 1e-4);
+  for (size_t i = 0; i < positions.size(); ++i) {
+    SCOPED_TRACE("x = " + std::to_string(positions[i]));
+    const double width = 2 * std::sqrt(100 - positions[i] * positions[i]);
+    ASSERT_LT(width, 1.0);  // both lines within the edges' claim of each crossing
+    EXPECT_EQ(made[i].route, SectionRoute::FaceByFace);
+    EXPECT_NEAR(made[i].area, width * 30, 1e-6);
+  }
+}
+
 // Where the face-by-face route would have to guess it leaves the plane to the section
 // curves: a plane through a vertex of the solid (every corner of a box at z = 0 and 10)
 // and a plane on a face. The faces are still the Common's.
