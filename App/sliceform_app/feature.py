@@ -308,7 +308,7 @@ class Sliceform:
             source = mesh_source(source_obj, size)
             return source, _source_key(source)
         shape = shapes.placed_shape(source_obj)
-        last = getattr(self, "last_source", None)
+        last = self.last_source
         if last is not None and last[1] == size and _same_shape(last[0], shape):
             return dict(last[2], name=source_obj.Label), last[3]
         source = {"brep": shapes.brep_of_shape(shape, size), "name": source_obj.Label}
