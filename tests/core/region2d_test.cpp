@@ -553,5 +553,58 @@ TEST(Region2d, BoxRoomAnswersAsBoxCentres) {
   EXPECT_GT(some, 50);
 }
 
+// RoomGrid never calls a question empty that has room, on shapes with narrow teeth, thin
+// rings and holes, small and large (its cells grow with the shape); and it does rule out
+// most questions without room, or it saves nothing.
+TEST(Region2d, RoomGridRulesOutOnlyQuestionsWithoutRoom) {
+  std::vector<Loop> comb{rect(0, 0, 40, 4)};
+  for (int k = 0; k < 16; ++k) comb.push_back(rect(1 + 2.3 * k, 3, 2.5 + 2.3 * k, 14 + k % 5));
+  Loop outer, inner;
+  for (int k = 0; k < 90; ++k) {
+    const double a = 2 * M_PI * k / 90;
+    outer.push_back({150 + 140 * std::cos(a), 150 + 140 * std::sin(a)});
+    inner.push_back({150 + 137.5 * std::cos(a), 150 + 137.5 * std::sin(a)});
+  }
+  std::reverse(inner.begin(), inner.end());
+  const Region2d shapes[] = {
+      Region2d::fromLoops(comb, FillRule::NonZero),
+      Region2d::fromLoops({outer, inner, rect(60, 60, 240, 70), rect(100, 100, 200, 200)}),
+      Region2d::fromLoops({rect(0, 0, 30, 20), rect(8, 6, 14, 12)})
+          .subtract(Region2d::fromLoops({{{18, 21}, {20, 10}, {22, 21}}}))};
+  std::mt19937 random(29);
+  int empty = 0, ruledOut = 0;
+  for (const Region2d& r : shapes) {
+    const RoomGrid grid(r.paths());
+    const Box2 b = r.bounds();
+    std::uniform_real_distribution<double> x(b.min.x - 2, b.max.x + 2), y(b.min.y - 2, b.max.y + 2),
+        size(0.3, 3), reach(0.5, 20), tight(0.6, 0.8);
+    for (int i = 0; i < 800; ++i) {
+      // Half the questions a box that barely fits a tooth or the ring, or barely does not
+      // (teeth 1.5 mm wide, the ring 2.5 mm): where a careless grid goes wrong.
+      const double t = tight(random);
+      const Vec2 half = i % 2 ? Vec2{size(random), size(random)} : Vec2{t, 1.66 * t};
+      const Vec2 c{x(random), y(random)};
+      const double wx = reach(random), wy = reach(random);
+      const Box2 window{{c.x - wx, c.y - wy}, {c.x + wx, c.y + wy}, false};
+      std::vector<Box2> avoid;
+      std::vector<ClipperLib::cInt> units;
+      for (int k = i % 3; k > 0; --k) {
+        const Vec2 o{c.x + reach(random) - 10, c.y + reach(random) - 10};
+        avoid.push_back({{o.x - 3, o.y - 3}, {o.x + 3, o.y + 3}, false});
+        for (const double v : {o.x - 3, o.y - 3, o.x + 3, o.y + 3}) units.push_back(Region2d::toUnits(v));
+      }
+      const bool may =
+          grid.mayHold(Region2d::toUnits(half.x), Region2d::toUnits(half.y), Region2d::toUnits(window.min.x),
+                       Region2d::toUnits(window.min.y), Region2d::toUnits(window.max.x),
+                       Region2d::toUnits(window.max.y), units.data(), avoid.size());
+      const bool room = !r.boxCentres(half, window, avoid).empty();
+      EXPECT_TRUE(may || !room) << "half " << half.x << " x " << half.y << " about " << c.x << ", " << c.y;
+      if (!room) ++empty, ruledOut += !may;
+    }
+  }
+  EXPECT_GT(empty, 600);
+  EXPECT_GT(ruledOut, empty * 6 / 10);
+}
+
 }  // namespace
 }  // namespace sliceform

@@ -555,7 +555,11 @@ const Region2d& BoxRoom::boxCentres(Vec2 half, const Box2& window, const std::ve
   std::vector<cInt> query = Region2d::boxQuery(half, window, avoid);
   const auto known = answers_.find(query);
   if (known != answers_.end()) return known->second;
-  Region2d room = region_.boxCentres(query);
+  // Most questions have no room (see RoomGrid); a room asked only a few is not worth a grid.
+  if (!grid_ && ++asked_ >= kGridAfter) grid_.emplace(region_.paths_);
+  const bool may = !grid_ || grid_->mayHold(query[0], query[1], query[2], query[3], query[4], query[5],
+                                            query.data() + 6, (query.size() - 6) / 4);
+  Region2d room = may ? region_.boxCentres(query) : Region2d();
   return answers_.emplace(std::move(query), std::move(room)).first->second;
 }
 
