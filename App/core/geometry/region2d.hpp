@@ -169,8 +169,9 @@ class BoxRoom {
  private:
   Region2d region_;
   mutable std::map<std::vector<ClipperLib::cInt>, Region2d> answers_;
-  // Questions it answers with Clipper before it makes its grid: a grid takes about as long
-  // as 10-20 of them (fandisk, whose rooms are asked few: 8 ms of grids saved 4 ms).
+  // Questions it answers with Clipper before it makes its grid, which takes as long as
+  // 10-20 of them: fandisk's papers are asked few, and grids from the 8th question cost
+  // 8 ms there to save 4 ms of Clipper.
   static constexpr size_t kGridAfter = 16;
   mutable size_t asked_ = 0;
   mutable std::optional<RoomGrid> grid_;
