@@ -76,26 +76,6 @@ def click_away_dialogs(answer):
     QtCore.QTimer.singleShot(50, press)
 
 
-def _hold_class():
-    from PySide import QtCore
-
-    class Hold(QtCore.QRunnable):
-        """Keeps one of Qt's pool threads busy until `gate` is set."""
-
-        def __init__(self, gate):
-            super().__init__()
-            self.gate = gate
-            self.setAutoDelete(False)
-
-        def run(self):
-            self.gate.wait(20)
-
-    return Hold
-
-
-Hold = _hold_class()
-
-
 def wait(ms=300):
     """Lets the GUI run its timers (the tree updates on one)."""
     from PySide import QtCore
@@ -278,6 +258,17 @@ try:
     # layout. The pool is held busy over both edits, so that the first edit's drawings are
     # still to come at the second whatever the machine's speed (a recompute runs Qt's loop
     # for its progress bar, which may deliver a quick drawing); 0.20 draws in the recompute.
+    class Hold(QtCore.QRunnable):
+        """Keeps one of Qt's pool threads busy until `gate` is set."""
+
+        def __init__(self, gate):
+            super().__init__()
+            self.gate = gate
+            self.setAutoDelete(False)
+
+        def run(self):
+            self.gate.wait(20)
+
     pool = QtCore.QThreadPool.globalInstance()
     gate = threading.Event()
     holds = [Hold(gate) for _ in range(pool.maxThreadCount())]

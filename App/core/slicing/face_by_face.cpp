@@ -101,12 +101,17 @@ bool crossings(const TopoDS_Edge& edge, double edgeTolerance, const gp_Dir& n, d
   // else unsure (a touch, or two crossings). occ/Motor-c.brep in its auto frame: a B-spline
   // edge's sample 48 nm from one U plane of 62 sent that plane to the section (20 ms).
   const int samples = type == GeomAbs_BSplineCurve ? std::clamp(4 * c.NbPoles(), 64, 1024) : 64;
-  const auto sample = [&](int i) { return i == samples ? t1 : t0 + (t1 - t0) * i / samples; };
+  // Sample i: its parameter, and the signed distance there.
+  const auto sample = [&](int i) -> std::pair<double, double> {
+    if (i == samples) return {t1, f1};
+    const double t = t0 + (t1 - t0) * i / samples;
+    return {t, f(t)};
+  };
   double ta = t0, fa = f0;
   for (int i = 1; i <= samples; ++i) {
-    double tb = sample(i), fb = i == samples ? f1 : f(tb);
+    auto [tb, fb] = sample(i);
     if (std::abs(fb) <= tolerance) {  // never the last: f1 is not on the plane
-      tb = sample(++i), fb = i == samples ? f1 : f(tb);
+      std::tie(tb, fb) = sample(++i);
       if (std::abs(fb) <= tolerance || (fa < 0) == (fb < 0)) return false;
     }
     if ((fa < 0) != (fb < 0)) {
