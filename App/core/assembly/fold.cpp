@@ -14,10 +14,12 @@
 #include <gp_Ax1.hxx>
 
 #include <cmath>
+#include <fstream>
 #include <mutex>
 #include <vector>
 
 #include "assembly/polyline_faces.hpp"
+#include "assembly/step_text.hpp"
 #include "support/atomic_file.hpp"
 #include "support/error.hpp"
 #include "support/occt_guard.hpp"
@@ -77,7 +79,17 @@ void writeShape(const TopoDS_Shape& shape, const std::string& path) {
         if (!BRepTools::Write(shape, temporary.c_str())) throw Error(ErrorKind::Io, "cannot write " + path);
         return;
       }
-      // The STEP writer's settings are process-wide statics.
+      // A mesh's polygon loops go as one edge each: the file grows with the edges.
+      const TopoDS_Shape polygons = polylineLoopsAsSplines(shape);
+      std::string text;
+      if (planarFacesStep(polygons, text)) {
+        std::ofstream out(temporary, std::ios::binary);
+        out << text;
+        out.close();
+        if (!out) throw Error(ErrorKind::Io, "cannot write " + path);
+        return;
+      }
+      // Anything else by OCCT's writer, whose settings are process-wide statics.
       static std::mutex lock;
       std::lock_guard<std::mutex> hold(lock);
       // The writer prints transfer statistics on stdout, which is the CLI's summary.
@@ -95,9 +107,8 @@ void writeShape(const TopoDS_Shape& shape, const std::string& path) {
         }
       } restore{printers, levels};
       // The planes' 2D curves stored once, not projected again and again while the writer
-      // bounds the faces, and trimmed to their edges (withPlaneCurves). A mesh's polygon
-      // loops go as one edge each: the writer's time and the file grow with the edges.
-      const TopoDS_Shape withCurves = withPlaneCurves(polylineLoopsAsSplines(shape), true);
+      // bounds the faces, and trimmed to their edges (withPlaneCurves).
+      const TopoDS_Shape withCurves = withPlaneCurves(polygons, true);
       // The writer's settings: AP214, millimetres, and no 2D curves on the planes (readers
       // rebuild them, and they doubled the file and the time: a mesh's polygon patches have
       // tens of thousands of edges). The schema is ours too, not the host's: OCCT 7.8.1
