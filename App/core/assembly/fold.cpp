@@ -79,17 +79,20 @@ void writeShape(const TopoDS_Shape& shape, const std::string& path) {
         if (!BRepTools::Write(shape, temporary.c_str())) throw Error(ErrorKind::Io, "cannot write " + path);
         return;
       }
-      // A mesh's polygon loops go as one edge each: the file grows with the edges.
-      const TopoDS_Shape polygons = polylineLoopsAsSplines(shape);
+      // Our writer takes every edge as it is, a mesh's polygon loops as their straight edges:
+      // written as one degree-1 B-spline a loop (polylineLoopsAsSplines, which OCCT's writer
+      // needs to be quick), FreeCAD's Face.Area reads such a face up to 9 times its area.
       std::string text;
-      if (planarFacesStep(polygons, text)) {
+      if (planarFacesStep(shape, text)) {
         std::ofstream out(temporary, std::ios::binary);
         out << text;
         out.close();
         if (!out) throw Error(ErrorKind::Io, "cannot write " + path);
         return;
       }
-      // Anything else by OCCT's writer, whose settings are process-wide statics.
+      // Anything else by OCCT's writer, whose settings are process-wide statics; a mesh's
+      // polygon loops go to it as one edge each, its time growing with the edges.
+      const TopoDS_Shape polygons = polylineLoopsAsSplines(shape);
       static std::mutex lock;
       std::lock_guard<std::mutex> hold(lock);
       // The writer prints transfer statistics on stdout, which is the CLI's summary.

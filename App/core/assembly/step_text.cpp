@@ -281,9 +281,27 @@ std::string timeStamp() {
 
 }  // namespace
 
+namespace {
+
+// The faces of nested compounds, each placed where the compounds put it; false when
+// anything else is found.
+bool facesOf(const TopoDS_Shape& shape, std::vector<TopoDS_Face>& out) {
+  if (shape.ShapeType() == TopAbs_FACE) {
+    out.push_back(TopoDS::Face(shape));
+    return true;
+  }
+  if (shape.ShapeType() != TopAbs_COMPOUND) return false;
+  for (TopoDS_Iterator it(shape); it.More(); it.Next())
+    if (!facesOf(it.Value(), out)) return false;
+  return true;
+}
+
+}  // namespace
+
 bool planarFacesStep(const TopoDS_Shape& shape, std::string& text) {
   text.clear();
-  if (shape.IsNull() || shape.ShapeType() != TopAbs_COMPOUND) return false;
+  std::vector<TopoDS_Face> faces;
+  if (shape.IsNull() || !facesOf(shape, faces)) return false;
   Writer w;
   Entities& e = w.e;
   const int application =
@@ -308,9 +326,8 @@ bool planarFacesStep(const TopoDS_Shape& shape, std::string& text) {
   e.add("SHAPE_DEFINITION_REPRESENTATION(" + ref(assemblyShape) + "," + ref(assemblyRepresentation) + ")");
   std::vector<int> placements{origin};
   int k = 0;
-  for (TopoDS_Iterator it(shape); it.More() && w.ok; it.Next()) {
-    if (it.Value().ShapeType() != TopAbs_FACE) return false;
-    const TopoDS_Face& located = TopoDS::Face(it.Value());
+  for (const TopoDS_Face& located : faces) {
+    if (!w.ok) break;
     const gp_Trsf t = located.Location().Transformation();
     if (std::abs(t.ScaleFactor() - 1) > 1e-12 || t.IsNegative()) return false;
     const std::string name = "patch " + std::to_string(++k);

@@ -14,11 +14,12 @@
 
 namespace sliceform {
 
-// `shape` (a compound of planar faces, each with a rigid placement) as the text of an AP214
-// file in millimetres. False, with `text` left empty, for anything else it does not write
-// as OCCT would: a child that is not a face, a face not on a plane, a placement that
-// scales or mirrors, an edge without a 3D curve or on a curve other than a line, conic or
-// B-spline, a loop whose edges do not run end to end. The caller then uses OCCT's writer.
+// `shape` (a face, or compounds of planar faces, each with a rigid placement) as the text of
+// an AP214 file in millimetres, a part for each face. False, with `text` left empty, for
+// anything else it does not write as OCCT would: a shape other than a face or a compound,
+// a face not on a plane, a placement that scales or mirrors, an edge without a 3D curve or
+// on a curve other than a line, conic or B-spline, a loop whose edges do not run end to
+// end. The caller then uses OCCT's writer.
 bool planarFacesStep(const TopoDS_Shape& shape, std::string& text);
 
 }  // namespace sliceform
