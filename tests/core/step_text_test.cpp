@@ -166,8 +166,15 @@ TEST(StepText, ReadsBackAsTheFacesPlaced) {
   const std::vector<TopoDS_Face> given = faces();
   std::string text;
   ASSERT_TRUE(planarFacesStep(compoundOf(given), text));
+  EXPECT_NE(text.find("PRODUCT('patch 5','patch 5'"), std::string::npos);  // no names given
+  // The parts named as the patches, an apostrophe written twice.
+  const std::vector<std::string> names{"U0", "V1", "U2", "V3", "it's"};
+  ASSERT_TRUE(planarFacesStep(compoundOf(given), text, names));
+  EXPECT_NE(text.find("PRODUCT('V3','V3'"), std::string::npos);
+  EXPECT_NE(text.find("PRODUCT('it''s','it''s'"), std::string::npos);
+  EXPECT_EQ(text.find("patch 5"), std::string::npos);
   test::TempDir dir;
-  writeShape(compoundOf(given), dir.file("a.step"));
+  writeShape(compoundOf(given), dir.file("a.step"), names);
   std::ifstream in(dir.file("a.step"));
   const std::string file{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
   EXPECT_NE(file.find("Sliceform assembly"), std::string::npos);  // our writer's, not OCCT's

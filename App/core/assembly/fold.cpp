@@ -69,7 +69,14 @@ TopoDS_Shape assemble(const Arrangement& a, const std::vector<PatchFace>& patche
   return all;
 }
 
-void writeShape(const TopoDS_Shape& shape, const std::string& path) {
+std::vector<std::string> assembledIds(const Arrangement& a, const std::vector<PatchFace>& patches) {
+  std::vector<std::string> ids;
+  for (size_t k = 0; k < patches.size(); ++k)
+    if (!patches[k].shape.IsNull()) ids.push_back(patchId(a.scaffold, static_cast<int>(k)));
+  return ids;
+}
+
+void writeShape(const TopoDS_Shape& shape, const std::string& path, const std::vector<std::string>& names) {
   const bool step = endsWith(path, ".step") || endsWith(path, ".stp");
   if (!step && !endsWith(path, ".brep"))
     throw Error(ErrorKind::BadParameter, path + ": the 3D assembly is written as .step, .stp or .brep");
@@ -83,7 +90,7 @@ void writeShape(const TopoDS_Shape& shape, const std::string& path) {
       // written as one degree-1 B-spline a loop (polylineLoopsAsSplines, which OCCT's writer
       // needs to be quick), FreeCAD's Face.Area reads such a face up to 9 times its area.
       std::string text;
-      if (planarFacesStep(shape, text)) {
+      if (planarFacesStep(shape, text, names)) {
         std::ofstream out(temporary, std::ios::binary);
         out << text;
         out.close();

@@ -25,7 +25,12 @@ gp_Trsf foldTransform(const Arrangement& arrangement, int patch, double thetaDeg
 TopoDS_Shape assemble(const Arrangement& arrangement, const std::vector<PatchFace>& patches,
                       double thetaDegrees);
 
-// Written atomically; the format is the file's extension: .step / .stp or .brep.
-void writeShape(const TopoDS_Shape& shape, const std::string& path);
+// The ids of the patches assemble() puts in the compound, in its order.
+std::vector<std::string> assembledIds(const Arrangement& arrangement, const std::vector<PatchFace>& patches);
+
+// Written atomically; the format is the file's extension: .step / .stp or .brep. A STEP
+// file names each face's part by `names` (planarFacesStep).
+void writeShape(const TopoDS_Shape& shape, const std::string& path,
+                const std::vector<std::string>& names = {});
 
 }  // namespace sliceform

@@ -255,8 +255,11 @@ class Writer {
   TopTools_DataMapOfShapeInteger vertices_, edges_;
 };
 
+// Part 21's string: an apostrophe written twice.
 std::string quoted(const std::string& s) {
-  return "'" + s + "'";
+  std::string out = "'";
+  for (const char c : s) out += c == '\'' ? std::string("''") : std::string(1, c);
+  return out + "'";
 }
 
 // A product named `name` in the contexts given: its PRODUCT_DEFINITION and the
@@ -298,7 +301,7 @@ bool facesOf(const TopoDS_Shape& shape, std::vector<TopoDS_Face>& out) {
 
 }  // namespace
 
-bool planarFacesStep(const TopoDS_Shape& shape, std::string& text) {
+bool planarFacesStep(const TopoDS_Shape& shape, std::string& text, const std::vector<std::string>& names) {
   text.clear();
   std::vector<TopoDS_Face> faces;
   if (shape.IsNull() || !facesOf(shape, faces)) return false;
@@ -330,7 +333,8 @@ bool planarFacesStep(const TopoDS_Shape& shape, std::string& text) {
     if (!w.ok) break;
     const gp_Trsf t = located.Location().Transformation();
     if (std::abs(t.ScaleFactor() - 1) > 1e-12 || t.IsNegative()) return false;
-    const std::string name = "patch " + std::to_string(++k);
+    ++k;
+    const std::string name = names.size() == faces.size() ? names[k - 1] : "patch " + std::to_string(k);
     const auto [part, partShape] = product(e, name, mechanical, definitionContext);
     const int face = w.face(TopoDS::Face(located.Located(TopLoc_Location())));
     const int shell = e.add("OPEN_SHELL(''," + refs({face}) + ")");

@@ -11,6 +11,7 @@
 #include <TopoDS_Shape.hxx>
 
 #include <string>
+#include <vector>
 
 namespace sliceform {
 
@@ -19,7 +20,10 @@ namespace sliceform {
 // anything else it does not write as OCCT would: a shape other than a face or a compound,
 // a face not on a plane, a placement that scales or mirrors, an edge without a 3D curve or
 // on a curve other than a line, conic or B-spline, a loop whose edges do not run end to
-// end. The caller then uses OCCT's writer.
-bool planarFacesStep(const TopoDS_Shape& shape, std::string& text);
+// end. The caller then uses OCCT's writer. The parts are named `names`, one a face in order
+// (the patch ids a maker reads on the sheets), or `patch 1`, `patch 2`, … when they are not
+// as many as the faces.
+bool planarFacesStep(const TopoDS_Shape& shape, std::string& text,
+                     const std::vector<std::string>& names = {});
 
 }  // namespace sliceform

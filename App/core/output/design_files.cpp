@@ -68,10 +68,11 @@ void DesignFilesWriter::start(const Design& d) {
   // large for the sheet), and then the earlier run's assembly.step must stay.
   stepFile_ = (fs::path(folder_) / (".assembly-" + std::to_string(::getpid()) + ".step")).string();
   madeFolder_ = !fs::exists(folder_);
-  step_ = std::async(std::launch::async, [assembly = assembly_, file = stepFile_, folder = folder_] {
+  step_ = std::async(std::launch::async, [assembly = assembly_, file = stepFile_, folder = folder_,
+                                          ids = assembledIds(d.arrangement, d.patches)] {
     const auto begin = std::chrono::steady_clock::now();
     createFolder(folder);
-    writeShape(assembly, file);
+    writeShape(assembly, file, ids);
     return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - begin).count();
   });
 }
