@@ -27,15 +27,19 @@
 #include <charconv>
 #include <cmath>
 #include <ctime>
-#include <optional>
+#include <string>
+#include <string_view>
+#include <utility>
 #include <vector>
 
 namespace sliceform {
 namespace {
 
-// Part 21's real: the shortest digits that read back as the same double (OCCT writes 15,
-// which can move a vertex off its curve by 1e-13), with a point and a capital E.
-void real(std::string& out, double v) {
+// Part 21's real: the shortest digits that read back as the same double (OCCT's writer
+// rounds to 15 significant digits), with a point and a capital E. False, with nothing
+// written, for an infinite or undefined value.
+bool real(std::string& out, double v) {
+  if (!std::isfinite(v)) return false;
   char digits[32];
   const std::to_chars_result r = std::to_chars(digits, digits + sizeof digits, v);
   const std::string_view s(digits, static_cast<size_t>(r.ptr - digits));
@@ -44,6 +48,7 @@ void real(std::string& out, double v) {
   out += mantissa;
   if (mantissa.find('.') == std::string_view::npos) out += '.';
   if (e != std::string_view::npos) out += 'E', out += s.substr(e + 1);
+  return true;
 }
 
 // The entities of one file, numbered as they are made; an entity may name one made later
@@ -77,10 +82,6 @@ std::string refs(const std::vector<int>& ids) {
   return s + ")";
 }
 
-bool finite(const gp_XYZ& p) {
-  return std::isfinite(p.X()) && std::isfinite(p.Y()) && std::isfinite(p.Z());
-}
-
 // Writes the geometry and topology of the faces; `ok` turns false at the first thing it
 // cannot write.
 class Writer {
@@ -88,11 +89,14 @@ class Writer {
   Entities e;
   bool ok = true;
 
+  // `v` written into `out`; a value that is not finite spoils the file.
+  void number(std::string& out, double v) {
+    if (!real(out, v)) ok = false;
+  }
   int triple(const char* type, const gp_XYZ& p) {
-    if (!finite(p)) ok = false;
     std::string body = type;
     body += "('',(";
-    real(body, p.X()), body += ',', real(body, p.Y()), body += ',', real(body, p.Z());
+    number(body, p.X()), body += ',', number(body, p.Y()), body += ',', number(body, p.Z());
     return e.add(body + "))");
   }
   int point(const gp_Pnt& p) { return triple("CARTESIAN_POINT", p.XYZ()); }
@@ -107,7 +111,7 @@ class Writer {
   int conic(const char* type, const gp_Ax2& a, std::initializer_list<double> radii) {
     const int at = axes(a);
     std::string body = std::string(type) + "(''," + ref(at);
-    for (const double r : radii) body += ',', real(body, r);
+    for (const double r : radii) body += ',', number(body, r);
     return e.add(body + ")");
   }
 
@@ -123,11 +127,11 @@ class Writer {
     for (int i = 1; i <= c->NbKnots(); ++i) {
       mults += (i > 1 ? "," : "") + std::to_string(c->Multiplicity(i));
       if (i > 1) knots += ',';
-      real(knots, c->Knot(i));
+      number(knots, c->Knot(i));
     }
     for (int i = 1; i <= c->NbPoles(); ++i) {
       if (i > 1) weights += ',';
-      real(weights, c->Weight(i));
+      number(weights, c->Weight(i));
     }
     mults += ')', knots += ')', weights += ')';
     const std::string closed = c->IsClosed() ? ".T." : ".F.";
@@ -267,7 +271,7 @@ std::string quoted(const std::string& s) {
 std::pair<int, int> product(Entities& e, const std::string& name, int mechanical, int definitionContext) {
   const int p = e.add("PRODUCT(" + quoted(name) + "," + quoted(name) + ",''," + refs({mechanical}) + ")");
   e.add("PRODUCT_TYPE('part',$," + refs({p}) + ")");
-  const int formation = e.add("PRODUCT_DEFINITION_FORMATION(''," + quoted("") + "," + ref(p) + ")");
+  const int formation = e.add("PRODUCT_DEFINITION_FORMATION('',''," + ref(p) + ")");
   const int definition =
       e.add("PRODUCT_DEFINITION('design',''," + ref(formation) + "," + ref(definitionContext) + ")");
   return {definition, e.add("PRODUCT_DEFINITION_SHAPE('',''," + ref(definition) + ")")};
@@ -281,10 +285,6 @@ std::string timeStamp() {
   std::strftime(text, sizeof text, "%Y-%m-%dT%H:%M:%S", &utc);
   return text;
 }
-
-}  // namespace
-
-namespace {
 
 // The faces of nested compounds, each placed where the compounds put it; false when
 // anything else is found.
@@ -346,9 +346,9 @@ bool planarFacesStep(const TopoDS_Shape& shape, std::string& text, const std::ve
     const int placed = w.axes(gp_Pnt(t.TranslationPart()), gp::DZ().Transformed(t), gp::DX().Transformed(t));
     placements.push_back(placed);
     const int transformation =
-        e.add("ITEM_DEFINED_TRANSFORMATION(''," + quoted("") + "," + ref(origin) + "," + ref(placed) + ")");
+        e.add("ITEM_DEFINED_TRANSFORMATION('',''," + ref(origin) + "," + ref(placed) + ")");
     const int relation =
-        e.add("( REPRESENTATION_RELATIONSHIP(''," + quoted("") + "," + ref(representation) + "," +
+        e.add("( REPRESENTATION_RELATIONSHIP('',''," + ref(representation) + "," +
               ref(assemblyRepresentation) + ") REPRESENTATION_RELATIONSHIP_WITH_TRANSFORMATION(" +
               ref(transformation) + ") SHAPE_REPRESENTATION_RELATIONSHIP() )");
     const int usage = e.add("NEXT_ASSEMBLY_USAGE_OCCURRENCE(" + quoted(std::to_string(k)) + ",'',''," +
