@@ -40,6 +40,14 @@ bool endsWith(const std::string& s, const std::string& tail) {
   return end == tail;
 }
 
+// The patches the assembly holds, in its order: those with a shape.
+std::vector<int> assembled(const std::vector<PatchFace>& patches) {
+  std::vector<int> out;
+  for (size_t k = 0; k < patches.size(); ++k)
+    if (!patches[k].shape.IsNull()) out.push_back(static_cast<int>(k));
+  return out;
+}
+
 }  // namespace
 
 gp_Trsf foldTransform(const Arrangement& a, int patch, double thetaDegrees) {
@@ -62,17 +70,14 @@ TopoDS_Shape assemble(const Arrangement& a, const std::vector<PatchFace>& patche
   TopoDS_Compound all;
   BRep_Builder builder;
   builder.MakeCompound(all);
-  for (size_t k = 0; k < patches.size(); ++k)
-    if (!patches[k].shape.IsNull())
-      builder.Add(
-          all, patches[k].shape.Moved(TopLoc_Location(foldTransform(a, static_cast<int>(k), thetaDegrees))));
+  for (const int k : assembled(patches))
+    builder.Add(all, patches[k].shape.Moved(TopLoc_Location(foldTransform(a, k, thetaDegrees))));
   return all;
 }
 
 std::vector<std::string> assembledIds(const Arrangement& a, const std::vector<PatchFace>& patches) {
   std::vector<std::string> ids;
-  for (size_t k = 0; k < patches.size(); ++k)
-    if (!patches[k].shape.IsNull()) ids.push_back(patchId(a.scaffold, static_cast<int>(k)));
+  for (const int k : assembled(patches)) ids.push_back(patchId(a.scaffold, k));
   return ids;
 }
 
