@@ -4,6 +4,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <optional>
+#include <random>
 
 #include "arrangement/arrange.hpp"
 #include "frames/hinge_table.hpp"
@@ -124,6 +126,79 @@ TEST(Slots, CutterGrowsEachSlotOnceForEveryChoice) {
   EXPECT_EQ(checked, 78);
   EXPECT_GT(split, 0);        // some choices cut the patch through...
   EXPECT_LT(split, checked);  // ...and some do not
+}
+
+// The neck test made column by column (ErodedColumns) counts the pieces that one Boolean of
+// the whole patch less its grown slots gives, and finds the same small pieces: on a plate
+// with a hole, a comb whose teeth the slots cut off, and a ring, for choices of slots up,
+// down, through or none on each line (two on some lines, round ends on some), one cutter
+// per shape serving every choice, so that its columns are made again as slots come on new
+// lines and each column's paper less its slots is reused.
+TEST(Slots, ColumnsCountAsTheWholePatch) {
+  SlotParams params;
+  const double neck = slotNeck(params, 0), crumb = slotCrumb(params),
+               small = SlotCutter::kSliverCrumbs * crumb;
+  const auto grow = [&](const Region2d& slots) {
+    std::vector<Region2d> out;
+    for (const Region2d& slot : slots.loopsApart()) out.push_back(slot.offset(neck));
+    return out;
+  };
+  Region2d comb = rect(0, 0, 30, 3);
+  for (int k = 0; k < 10; ++k) comb = comb.unite(rect(3 * k + 0.5, 3, 3 * k + 1.7, 12));
+  const std::vector<Region2d> shapes = {rect(0, 0, 30, 12).subtract(Region2d::fromLoops({circle(15, 6, 3)})),
+                                        comb, annulus(15, 6, 3, 6)};
+  std::mt19937 random(17);
+  const auto uniform = [&](double lo, double hi) {
+    return std::uniform_real_distribution<double>(lo, hi)(random);
+  };
+  int counted = 0, split = 0, withSmall = 0;
+  for (const Region2d& shape : shapes) {
+    const Region2d eroded = shape.offset(-neck);
+    const ErodedColumns columns(eroded, neck, crumb, 2 * (params.width() + 2 * neck));
+    for (int trial = 0; trial < 60; ++trial) {
+      params.end = trial % 3 == 0 ? SlotEnd::Round : SlotEnd::Square;
+      std::vector<SlotCut> cuts;
+      for (int line = 0; line < 12; ++line) {
+        const double x = 1.1 + 2.4 * line, root = uniform(0.5, 11.5);
+        switch (std::uniform_int_distribution<int>(0, 4)(random)) {
+          case 0:
+            cuts.push_back({x, {root, 13}, false, true});
+            break;  // up
+          case 1:
+            cuts.push_back({x, {-1, root}, true, false});
+            break;  // down
+          case 2:
+            cuts.push_back({x, {-1, 13}, true, true});
+            break;  // through
+          case 3:
+            cuts.push_back({x, {root, std::min(13.0, root + 3)}, false, root + 3 > 12});
+            break;
+          default:
+            break;  // none
+        }
+        if (line % 5 == 2) cuts.push_back({x, {-1, uniform(0, 2)}, true, false});
+      }
+      const Region2d slots = slotStrips(cuts, params);
+      std::vector<Region2d> inColumns, whole;
+      const std::optional<int> n = columns.less(slots, grow, small, &inColumns);
+      ASSERT_TRUE(n.has_value());
+      const int expected =
+          openedPiecesLess(eroded, Region2d::overlaid(grow(slots)), neck, crumb, small, &whole);
+      EXPECT_EQ(*n, expected) << "shape " << &shape - shapes.data() << ", trial " << trial;
+      double a = 0, b = 0;
+      for (const Region2d& r : inColumns) a += r.area();
+      for (const Region2d& r : whole) b += r.area();
+      EXPECT_EQ(inColumns.size(), whole.size());
+      EXPECT_NEAR(a, b, 1e-6);
+      ++counted;
+      split += expected > 1;
+      withSmall += !whole.empty();
+    }
+  }
+  EXPECT_EQ(counted, 180);
+  EXPECT_GT(split, 20);
+  EXPECT_LT(split, counted);
+  EXPECT_GT(withSmall, 5);
 }
 
 // The search bounds a move by the cutter's neck test alone (SlotCutter::opened) and finishes
