@@ -529,6 +529,28 @@ TEST(Region2d, SegmentsInsideAgreeWithSamples) {
 
 // BoxRoom answers as boxCentres does, to the unit, whether it works the answer out or
 // remembers it.
+// A plate with a hole, cut along x = 4 and x = 6.5 by a Boolean with a strip between them:
+// the pieces' stretches on those lines are where the cut left them, and only there (not on
+// the plate's own sides at x = 0 and 10, which are not asked for, nor on lines off the cut).
+TEST(Region2d, StretchesOnTheLinesACutLeaves) {
+  const Region2d plate = Region2d::fromLoops({rect(0, 0, 10, 8), rect(5, 2, 8, 5, true)});
+  const Region2d strip = Region2d::fromLoops({rect(4, -1, 6.5, 9)});
+  std::vector<Region2d::Stretch> found;
+  for (const Region2d& piece : plate.subtractComponentsRaw(strip))
+    for (const Region2d::Stretch& s : piece.stretchesOn({4, 6.5})) found.push_back(s);
+  ASSERT_EQ(found.size(), 3u);
+  std::sort(found.begin(), found.end(),
+            [](const auto& a, const auto& b) { return a.x != b.x ? a.x < b.x : a.y.lo < b.y.lo; });
+  EXPECT_EQ(found[0].x, 4);  // the left piece's side, the plate's full height
+  EXPECT_NEAR(found[0].y.lo, 0, 1e-9);
+  EXPECT_NEAR(found[0].y.hi, 8, 1e-9);
+  EXPECT_EQ(found[1].x, 6.5);  // the right piece's side, below the hole and above it
+  EXPECT_NEAR(found[1].y.hi, 2, 1e-9);
+  EXPECT_NEAR(found[2].y.lo, 5, 1e-9);
+  EXPECT_TRUE(plate.stretchesOn({4.00001, 6.5}).empty());
+  EXPECT_EQ(plate.stretchesOn({0, 10}).size(), 2u);
+}
+
 TEST(Region2d, BoxRoomAnswersAsBoxCentres) {
   const Region2d r = Region2d::fromLoops({rect(0, 0, 30, 20), rect(8, 6, 14, 12)})
                          .subtract(Region2d::fromLoops({{{18, 21}, {20, 10}, {22, 21}}}));

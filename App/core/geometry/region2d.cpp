@@ -629,6 +629,20 @@ std::vector<std::vector<Interval>> Region2d::intervalsOnVerticalLines(const std:
   return out;
 }
 
+std::vector<Region2d::Stretch> Region2d::stretchesOn(const std::vector<double>& xs) const {
+  std::vector<cInt> units;
+  for (const double x : xs) units.push_back(toUnits(x));
+  std::vector<Stretch> out;
+  for (const ClipperLib::Path& path : paths_)
+    for (size_t i = 0, n = path.size(); i < n; ++i) {
+      const IntPoint& p = path[i];
+      const IntPoint& q = path[(i + 1) % n];
+      if (p.X == q.X && p.Y != q.Y && std::binary_search(units.begin(), units.end(), p.X))
+        out.push_back({toMm(p.X), {toMm(std::min(p.Y, q.Y)), toMm(std::max(p.Y, q.Y))}});
+    }
+  return out;
+}
+
 double Region2d::signedArea(const Loop& loop) {
   double twice = 0;
   for (size_t i = 0, n = loop.size(); i < n; ++i)

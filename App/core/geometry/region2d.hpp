@@ -136,6 +136,14 @@ class Region2d {
   std::vector<Interval> intervalsOnLine(Vec2 point, Vec2 dir) const;
   // intervalsOnLine({x, 0}, {0, 1}) for every x, to the bit, in one pass over the edges.
   std::vector<std::vector<Interval>> intervalsOnVerticalLines(const std::vector<double>& xs) const;
+  // The stretches of the boundary that lie on the lines x = xs[k] (to Clipper's units, as
+  // a Boolean with a rectangle whose side is such a line leaves them): each one's line x and
+  // its y interval. `xs` sorted.
+  struct Stretch {
+    double x;
+    Interval y;
+  };
+  std::vector<Stretch> stretchesOn(const std::vector<double>& xs) const;
 
   // Shoelace area of one loop, mm²: positive for an outer loop, negative for a hole.
   static double signedArea(const Loop& loop);

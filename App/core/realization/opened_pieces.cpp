@@ -8,8 +8,6 @@
 
 namespace sliceform {
 
-using ClipperLib::cInt;
-
 namespace {
 
 struct Segment {
@@ -64,11 +62,6 @@ bool fartherThan(const std::vector<Segment>& a, const Box2& boxA, const std::vec
   return true;
 }
 
-// A stretch of a piece's boundary along a column's side x (Clipper's units).
-struct SideStretch {
-  cInt x, lo, hi;
-};
-
 }  // namespace
 
 // One connected piece of an eroded region: an outer loop with its holes.
@@ -80,7 +73,7 @@ struct OpenedPart {
   // Made once for the pieces ErodedColumns keeps (else when first needed): the edges, and
   // the stretches of boundary along the columns' sides.
   std::vector<Segment> edges;
-  std::vector<SideStretch> stretches;
+  std::vector<Region2d::Stretch> stretches;
 };
 
 namespace {
@@ -100,20 +93,14 @@ OpenedPart makePart(Region2d piece) {
 
 // A piece ErodedColumns keeps for many counts, its edges and its stretches along the
 // columns' sides (`sides`, sorted) made once.
-OpenedPart keptPart(Region2d piece, const std::vector<cInt>& sides) {
+OpenedPart keptPart(Region2d piece, const std::vector<double>& sides) {
   OpenedPart part = makePart(std::move(piece));
   part.edges = segments(part.loops);
-  for (const ClipperLib::Path& path : part.region.paths())
-    for (size_t i = 0, n = path.size(); i < n; ++i) {
-      const ClipperLib::IntPoint& a = path[i];
-      const ClipperLib::IntPoint& b = path[(i + 1) % n];
-      if (a.X == b.X && a.Y != b.Y && std::binary_search(sides.begin(), sides.end(), a.X))
-        part.stretches.push_back({a.X, std::min(a.Y, b.Y), std::max(a.Y, b.Y)});
-    }
+  part.stretches = part.region.stretchesOn(sides);
   return part;
 }
 
-std::vector<OpenedPart> keptParts(std::vector<Region2d> pieces, const std::vector<cInt>& sides) {
+std::vector<OpenedPart> keptParts(std::vector<Region2d> pieces, const std::vector<double>& sides) {
   std::vector<OpenedPart> out;
   for (Region2d& piece : pieces) out.push_back(keptPart(std::move(piece), sides));
   return out;
@@ -223,34 +210,37 @@ int countPieces(std::vector<Region2d> pieces, double neck, double crumb, double 
 // the two anyway.
 std::vector<size_t> joinedAlongSides(const std::vector<const OpenedPart*>& parts) {
   struct At {
-    SideStretch s;
+    Region2d::Stretch s;
     size_t part;
   };
   std::vector<At> all;
   for (size_t k = 0; k < parts.size(); ++k)
-    for (const SideStretch& s : parts[k]->stretches) all.push_back({s, k});
+    for (const Region2d::Stretch& s : parts[k]->stretches) all.push_back({s, k});
   std::sort(all.begin(), all.end(),
-            [](const At& a, const At& b) { return a.s.x != b.s.x ? a.s.x < b.s.x : a.s.lo < b.s.lo; });
+            [](const At& a, const At& b) { return a.s.x != b.s.x ? a.s.x < b.s.x : a.s.y.lo < b.s.y.lo; });
   std::vector<size_t> link(parts.size());
   std::iota(link.begin(), link.end(), size_t{0});
   const std::function<size_t(size_t)> root = [&](size_t i) {
     return link[i] == i ? i : link[i] = root(link[i]);
   };
   for (size_t i = 0; i < all.size(); ++i)
-    for (size_t j = i + 1; j < all.size() && all[j].s.x == all[i].s.x && all[j].s.lo < all[i].s.hi; ++j)
+    for (size_t j = i + 1; j < all.size() && all[j].s.x == all[i].s.x && all[j].s.y.lo < all[i].s.y.hi; ++j)
       if (root(all[i].part) != root(all[j].part)) link[root(all[j].part)] = root(all[i].part);
   return link;
 }
 
-Region2d::Loop rectangle(cInt x0, double y0, cInt x1, double y1) {
-  const double a = Region2d::toMm(x0), b = Region2d::toMm(x1);
-  return {{a, y0}, {b, y0}, {b, y1}, {a, y1}};
+Region2d::Loop rectangle(double x0, double y0, double x1, double y1) {
+  return {{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}};
 }
 
-// Clipper's units a column is widened by on each side beyond its slots: a slot's grown
-// strip on the same line may come out a unit wider by rounding, and would make the columns
-// again (1 µm).
-constexpr cInt kColumnPad = 100;
+// On Region2d's grid: a column's sides are where its Booleans put them.
+double snapped(double mm) {
+  return std::round(mm * Region2d::kUnitsPerMm) / Region2d::kUnitsPerMm;
+}
+
+// mm a column is widened by on each side beyond its slots: a slot's grown strip on the
+// same line may come out a unit wider by rounding, and would make the columns again.
+constexpr double kColumnPad = 1e-3;
 // The columns' paper less slots, kept: a patch's searches try a few choices per column.
 constexpr size_t kMaxKept = 4096;
 
@@ -277,19 +267,19 @@ int openedPiecesLess(const Region2d& eroded, const Region2d& grown, double neck,
   return countPieces(eroded.subtractComponentsRaw(grown), neck, crumb, small, smallPieces);
 }
 
-// The columns (x ranges, sorted, apart), their sides, the paper between them, and each
-// one's paper.
+// The columns (x ranges in mm on Region2d's grid, sorted, apart), their sides, the paper
+// between them, and each one's paper.
 struct ErodedColumns::Layout {
-  std::vector<std::pair<cInt, cInt>> columns;
-  std::vector<cInt> sides;
+  std::vector<Range> columns;
+  std::vector<double> sides;
   std::vector<OpenedPart> between;
   std::vector<std::vector<OpenedPart>> within;
   std::vector<Region2d> paper;  // within[k] overlaid
 
   // The column holding [lo, hi], or columns.size().
-  size_t holding(cInt lo, cInt hi) const {
+  size_t holding(double lo, double hi) const {
     auto it = std::upper_bound(columns.begin(), columns.end(), lo,
-                               [](cInt x, const std::pair<cInt, cInt>& c) { return x < c.first; });
+                               [](double x, const Range& c) { return x < c.first; });
     if (it == columns.begin()) return columns.size();
     --it;
     return hi <= it->second ? static_cast<size_t>(it - columns.begin()) : columns.size();
@@ -302,31 +292,32 @@ ErodedColumns::ErodedColumns(const Region2d& eroded, double neck, double crumb, 
 ErodedColumns::~ErodedColumns() = default;
 
 std::shared_ptr<const ErodedColumns::Layout> ErodedColumns::layoutFor(
-    const std::vector<std::pair<cInt, cInt>>& ranges) const {
+    const std::vector<Range>& ranges) const {
   std::lock_guard<std::mutex> lock(mutex_);
-  if (layout_ && std::all_of(ranges.begin(), ranges.end(), [&](const std::pair<cInt, cInt>& r) {
+  if (layout_ && std::all_of(ranges.begin(), ranges.end(), [&](const Range& r) {
         return layout_->holding(r.first, r.second) < layout_->columns.size();
       }))
     return layout_;
   // The columns so far and the new ranges, widened, those that touch merged.
-  std::vector<std::pair<cInt, cInt>> all = layout_ ? layout_->columns : std::vector<std::pair<cInt, cInt>>{};
-  for (const auto& r : ranges) all.emplace_back(r.first - kColumnPad, r.second + kColumnPad);
+  std::vector<Range> all = layout_ ? layout_->columns : std::vector<Range>{};
+  for (const Range& r : ranges)
+    all.emplace_back(snapped(r.first - kColumnPad), snapped(r.second + kColumnPad));
   std::sort(all.begin(), all.end());
   auto next = std::make_shared<Layout>();
-  for (const auto& r : all)
+  for (const Range& r : all)
     if (!next->columns.empty() && r.first <= next->columns.back().second)
       next->columns.back().second = std::max(next->columns.back().second, r.second);
     else
       next->columns.push_back(r);
-  for (const auto& c : next->columns) next->sides.insert(next->sides.end(), {c.first, c.second});
+  for (const Range& c : next->columns) next->sides.insert(next->sides.end(), {c.first, c.second});
   // The patch cut along the columns' sides: two differences, each turned as the slot tests'
   // (Region2d::subtractComponentsRaw), so that both meet each side at the same points.
   const Box2 box = eroded_->bounds();
   const double y0 = box.min.y - 1, y1 = box.max.y + 1;
-  const cInt x0 = Region2d::toUnits(box.min.x - 1), x1 = Region2d::toUnits(box.max.x + 1);
+  const double x0 = snapped(box.min.x - 1), x1 = snapped(box.max.x + 1);
   std::vector<Region2d::Loop> columns, gaps;
-  cInt from = x0;
-  for (const auto& c : next->columns) {
+  double from = x0;
+  for (const Range& c : next->columns) {
     columns.push_back(rectangle(c.first, y0, c.second, y1));
     if (c.first > from) gaps.push_back(rectangle(from, y0, c.first, y1));
     from = std::max(from, c.second);
@@ -336,10 +327,8 @@ std::shared_ptr<const ErodedColumns::Layout> ErodedColumns::layoutFor(
   next->within.resize(next->columns.size());
   for (OpenedPart& part :
        keptParts(eroded_->subtractComponentsRaw(Region2d::overlaidLoops(gaps)), next->sides)) {
-    const ClipperLib::Path& outer = part.region.paths().front();
-    const auto [lo, hi] = std::minmax_element(outer.begin(), outer.end(),
-                                              [](const auto& a, const auto& b) { return a.X < b.X; });
-    const size_t c = next->holding(lo->X, hi->X);
+    const double middle = (part.box.min.x + part.box.max.x) / 2;
+    const size_t c = next->holding(middle, middle);
     (c < next->columns.size() ? next->within[c] : next->between).push_back(std::move(part));
   }
   for (const std::vector<OpenedPart>& parts : next->within) {
@@ -351,31 +340,24 @@ std::shared_ptr<const ErodedColumns::Layout> ErodedColumns::layoutFor(
   return layout_;
 }
 
-std::shared_ptr<const ErodedColumns::Parts> ErodedColumns::columnLess(const Layout& layout, size_t column,
-                                                                      const ClipperLib::Paths& slots,
-                                                                      const Grow& grow) const {
+std::shared_ptr<const ErodedColumns::Parts> ErodedColumns::columnLess(
+    const Layout& layout, size_t column, const std::vector<Region2d::Loop>& slots, const Grow& grow) const {
   const auto [lo, hi] = layout.columns[column];
-  std::vector<cInt> key = {lo, hi};
-  for (const ClipperLib::Path& path : slots) {
-    key.push_back(static_cast<cInt>(path.size()));
-    for (const ClipperLib::IntPoint& p : path) key.insert(key.end(), {p.X, p.Y});
+  std::vector<double> key = {lo, hi};
+  for (const Region2d::Loop& loop : slots) {
+    key.push_back(static_cast<double>(loop.size()));
+    for (const Vec2& p : loop) key.insert(key.end(), {p.x, p.y});
   }
   {
     std::lock_guard<std::mutex> lock(mutex_);
     const auto it = columns_.find(key);
     if (it != columns_.end()) return it->second;
   }
-  std::vector<Region2d::Loop> loops;
-  for (const ClipperLib::Path& path : slots) {
-    loops.emplace_back();
-    for (const ClipperLib::IntPoint& p : path)
-      loops.back().push_back({Region2d::toMm(p.X), Region2d::toMm(p.Y)});
+  const std::vector<Region2d> grown = grow(Region2d::overlaidLoops(slots));
+  for (const Region2d& g : grown) {
+    const Box2 b = g.bounds();
+    if (!b.empty && (b.min.x < lo || b.max.x > hi)) return nullptr;
   }
-  const std::vector<Region2d> grown = grow(Region2d::overlaidLoops(loops));
-  for (const Region2d& g : grown)
-    for (const ClipperLib::Path& path : g.paths())
-      for (const ClipperLib::IntPoint& p : path)
-        if (p.X < lo || p.X > hi) return nullptr;
   auto parts = std::make_shared<const Parts>(
       keptParts(layout.paper[column].subtractComponentsRaw(Region2d::overlaid(grown)), layout.sides));
   std::lock_guard<std::mutex> lock(mutex_);
@@ -389,19 +371,20 @@ std::optional<int> ErodedColumns::less(const Region2d& slots, const Grow& grow, 
   if (slots.holeCount() > 0) return std::nullopt;
   // Each slot's column, from its own x range: its grown strip reaches a neck further, and
   // its round corners' chords (SlotCutter::kNeckArcTolerance) no further than 0.01 mm more.
-  const cInt reach = Region2d::toUnits(neck_ + 0.01) + 1;
-  std::vector<std::pair<cInt, cInt>> ranges;
-  for (const ClipperLib::Path& path : slots.paths()) {
-    cInt lo = path.front().X, hi = lo;
-    for (const ClipperLib::IntPoint& p : path) lo = std::min(lo, p.X), hi = std::max(hi, p.X);
-    if (Region2d::toMm(hi - lo) + 2 * neck_ > widest_) return std::nullopt;
+  const double reach = neck_ + 0.01 + 1e-5;
+  const std::vector<Region2d::Loop> loops = slots.loops();
+  std::vector<Range> ranges;
+  for (const Region2d::Loop& loop : loops) {
+    double lo = loop.front().x, hi = lo;
+    for (const Vec2& p : loop) lo = std::min(lo, p.x), hi = std::max(hi, p.x);
+    if (hi - lo + 2 * neck_ > widest_) return std::nullopt;
     ranges.emplace_back(lo - reach, hi + reach);
   }
   if (eroded_->empty()) return 0;
   const std::shared_ptr<const Layout> layout = layoutFor(ranges);
-  std::vector<ClipperLib::Paths> inColumn(layout->columns.size());
+  std::vector<std::vector<Region2d::Loop>> inColumn(layout->columns.size());
   for (size_t k = 0; k < ranges.size(); ++k)
-    inColumn[layout->holding(ranges[k].first, ranges[k].second)].push_back(slots.paths()[k]);
+    inColumn[layout->holding(ranges[k].first, ranges[k].second)].push_back(loops[k]);
   std::vector<const OpenedPart*> parts;
   for (const OpenedPart& part : layout->between) parts.push_back(&part);
   std::vector<std::shared_ptr<const Parts>> cut;

@@ -9,6 +9,7 @@
 #include <memory>
 #include <mutex>
 #include <optional>
+#include <utility>
 #include <vector>
 
 #include "geometry/region2d.hpp"
@@ -64,19 +65,19 @@ class ErodedColumns {
  private:
   struct Layout;
   using Parts = std::vector<OpenedPart>;
-  // The layout whose columns hold `ranges` (x ranges in Clipper's units), made when needed.
-  std::shared_ptr<const Layout> layoutFor(
-      const std::vector<std::pair<ClipperLib::cInt, ClipperLib::cInt>>& ranges) const;
+  using Range = std::pair<double, double>;  // x from, to, mm
+  // The layout whose columns hold `ranges`, made when needed.
+  std::shared_ptr<const Layout> layoutFor(const std::vector<Range>& ranges) const;
   // The column's paper less `slots` grown, or null where they grow out of the column.
-  std::shared_ptr<const Parts> columnLess(const Layout& layout, size_t column, const ClipperLib::Paths& slots,
-                                          const Grow& grow) const;
+  std::shared_ptr<const Parts> columnLess(const Layout& layout, size_t column,
+                                          const std::vector<Region2d::Loop>& slots, const Grow& grow) const;
 
   const Region2d* eroded_;
   double neck_, crumb_, widest_;
   mutable std::mutex mutex_;
   mutable std::shared_ptr<const Layout> layout_;
   // A column's paper less its slots, by the column and the slots' points.
-  mutable std::map<std::vector<ClipperLib::cInt>, std::shared_ptr<const Parts>> columns_;
+  mutable std::map<std::vector<double>, std::shared_ptr<const Parts>> columns_;
 };
 
 }  // namespace sliceform
