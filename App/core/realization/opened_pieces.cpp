@@ -3,11 +3,9 @@
 
 #include <algorithm>
 #include <cmath>
-#include <functional>
 #include <numeric>
 
 namespace sliceform {
-
 namespace {
 
 struct Segment {
@@ -78,6 +76,12 @@ struct OpenedPart {
 
 namespace {
 
+// Union-find: the root of i's set in `link` (each one's link to another of its set).
+size_t rootOf(std::vector<size_t>& link, size_t i) {
+  while (link[i] != i) i = link[i] = link[link[i]];
+  return i;
+}
+
 OpenedPart makePart(Region2d piece) {
   OpenedPart part;
   part.region = std::move(piece);
@@ -125,10 +129,7 @@ int countOpenedParts(const std::vector<const OpenedPart*>& parts, double neck, d
     cluster.resize(parts.size());
     std::iota(cluster.begin(), cluster.end(), size_t{0});
   }
-  const auto root = [&](size_t i) {
-    while (cluster[i] != i) i = cluster[i] = cluster[cluster[i]];
-    return i;
-  };
+  const auto root = [&](size_t i) { return rootOf(cluster, i); };
   std::vector<std::vector<Segment>> made(parts.size());
   const auto edges = [&](size_t k) -> const std::vector<Segment>& {
     if (!parts[k]->edges.empty()) return parts[k]->edges;
@@ -220,9 +221,7 @@ std::vector<size_t> joinedAlongSides(const std::vector<const OpenedPart*>& parts
             [](const At& a, const At& b) { return a.s.x != b.s.x ? a.s.x < b.s.x : a.s.y.lo < b.s.y.lo; });
   std::vector<size_t> link(parts.size());
   std::iota(link.begin(), link.end(), size_t{0});
-  const std::function<size_t(size_t)> root = [&](size_t i) {
-    return link[i] == i ? i : link[i] = root(link[i]);
-  };
+  const auto root = [&](size_t i) { return rootOf(link, i); };
   for (size_t i = 0; i < all.size(); ++i)
     for (size_t j = i + 1; j < all.size() && all[j].s.x == all[i].s.x && all[j].s.y.lo < all[i].s.y.hi; ++j)
       if (root(all[i].part) != root(all[j].part)) link[root(all[j].part)] = root(all[i].part);
