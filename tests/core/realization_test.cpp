@@ -133,7 +133,8 @@ TEST(Slots, CutterGrowsEachSlotOnceForEveryChoice) {
 // with a hole, a comb whose teeth the slots cut off, and a ring, for choices of slots up,
 // down, through or none on each line (two on some lines, round ends on some), one cutter
 // per shape serving every choice, so that its columns are made again as slots come on new
-// lines and each column's paper less its slots is reused.
+// lines (or knowing the lines from the start) and each column's paper less its slots is
+// reused.
 TEST(Slots, ColumnsCountAsTheWholePatch) {
   SlotParams params;
   const double neck = slotNeck(params, 0), crumb = slotCrumb(params),
@@ -154,12 +155,17 @@ TEST(Slots, ColumnsCountAsTheWholePatch) {
   int counted = 0, split = 0, withSmall = 0;
   for (const Region2d& shape : shapes) {
     const Region2d eroded = shape.offset(-neck);
-    const ErodedColumns columns(eroded, neck, crumb, 2 * (params.width() + 2 * neck));
+    // One cutter makes its columns as slots come; the other knows the lines up front.
+    const double widest = 2 * (params.width() + 2 * neck);
+    std::vector<double> lines;
+    for (int line = 0; line < 12; ++line) lines.push_back(1.1 + 2.4 * line);
+    const ErodedColumns asTheyCome(eroded, neck, crumb, widest);
+    const ErodedColumns known(eroded, neck, crumb, widest, lines, params.width() / 2);
     for (int trial = 0; trial < 60; ++trial) {
       params.end = trial % 3 == 0 ? SlotEnd::Round : SlotEnd::Square;
       std::vector<SlotCut> cuts;
       for (int line = 0; line < 12; ++line) {
-        const double x = 1.1 + 2.4 * line, root = uniform(0.5, 11.5);
+        const double x = lines[line], root = uniform(0.5, 11.5);
         switch (std::uniform_int_distribution<int>(0, 4)(random)) {
           case 0:
             cuts.push_back({x, {root, 13}, false, true});
@@ -179,17 +185,21 @@ TEST(Slots, ColumnsCountAsTheWholePatch) {
         if (line % 5 == 2) cuts.push_back({x, {-1, uniform(0, 2)}, true, false});
       }
       const Region2d slots = slotStrips(cuts, params);
-      std::vector<Region2d> inColumns, whole;
-      const std::optional<int> n = columns.less(slots, grow, small, &inColumns);
-      ASSERT_TRUE(n.has_value());
+      std::vector<Region2d> whole;
       const int expected =
           openedPiecesLess(eroded, Region2d::overlaid(grow(slots)), neck, crumb, small, &whole);
-      EXPECT_EQ(*n, expected) << "shape " << &shape - shapes.data() << ", trial " << trial;
-      double a = 0, b = 0;
-      for (const Region2d& r : inColumns) a += r.area();
+      double b = 0;
       for (const Region2d& r : whole) b += r.area();
-      EXPECT_EQ(inColumns.size(), whole.size());
-      EXPECT_NEAR(a, b, 1e-6);
+      for (const ErodedColumns* columns : {&asTheyCome, &known}) {
+        std::vector<Region2d> inColumns;
+        const std::optional<int> n = columns->less(slots, grow, small, &inColumns);
+        ASSERT_TRUE(n.has_value());
+        EXPECT_EQ(*n, expected) << "shape " << &shape - shapes.data() << ", trial " << trial;
+        double a = 0;
+        for (const Region2d& r : inColumns) a += r.area();
+        EXPECT_EQ(inColumns.size(), whole.size());
+        EXPECT_NEAR(a, b, 1e-6);
+      }
       ++counted;
       split += expected > 1;
       withSmall += !whole.empty();

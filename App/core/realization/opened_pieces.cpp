@@ -285,8 +285,11 @@ struct ErodedColumns::Layout {
   }
 };
 
-ErodedColumns::ErodedColumns(const Region2d& eroded, double neck, double crumb, double widest)
-    : eroded_(&eroded), neck_(neck), crumb_(crumb), widest_(widest) {}
+ErodedColumns::ErodedColumns(const Region2d& eroded, double neck, double crumb, double widest,
+                             const std::vector<double>& lines, double halfWidth)
+    : eroded_(&eroded), neck_(neck), crumb_(crumb), widest_(widest) {
+  for (const double x : lines) expected_.emplace_back(x - halfWidth - reach(), x + halfWidth + reach());
+}
 
 ErodedColumns::~ErodedColumns() = default;
 
@@ -299,6 +302,9 @@ std::shared_ptr<const ErodedColumns::Layout> ErodedColumns::layoutFor(
     return layout_;
   // The columns so far and the new ranges, widened, those that touch merged.
   std::vector<Range> all = layout_ ? layout_->columns : std::vector<Range>{};
+  if (!layout_)
+    for (const Range& r : expected_)
+      all.emplace_back(snapped(r.first - kColumnPad), snapped(r.second + kColumnPad));
   for (const Range& r : ranges)
     all.emplace_back(snapped(r.first - kColumnPad), snapped(r.second + kColumnPad));
   std::sort(all.begin(), all.end());
@@ -368,16 +374,13 @@ std::shared_ptr<const ErodedColumns::Parts> ErodedColumns::columnLess(
 std::optional<int> ErodedColumns::less(const Region2d& slots, const Grow& grow, double small,
                                        std::vector<Region2d>* smallPieces) const {
   if (slots.holeCount() > 0) return std::nullopt;
-  // Each slot's column, from its own x range: its grown strip reaches a neck further, and
-  // its round corners' chords (SlotCutter::kNeckArcTolerance) no further than 0.01 mm more.
-  const double reach = neck_ + 0.01 + 1e-5;
   const std::vector<Region2d::Loop> loops = slots.loops();
   std::vector<Range> ranges;
   for (const Region2d::Loop& loop : loops) {
     double lo = loop.front().x, hi = lo;
     for (const Vec2& p : loop) lo = std::min(lo, p.x), hi = std::max(hi, p.x);
     if (hi - lo + 2 * neck_ > widest_) return std::nullopt;
-    ranges.emplace_back(lo - reach, hi + reach);
+    ranges.emplace_back(lo - reach(), hi + reach());
   }
   if (eroded_->empty()) return 0;
   const std::shared_ptr<const Layout> layout = layoutFor(ranges);

@@ -518,8 +518,11 @@ std::vector<std::shared_ptr<const SlotCutter>> patchCutters(const RealizationInp
     if (it != cache->end()) out[p] = it->second;
   }
   parallelFor(n, [&](size_t p) {
-    if (wanted(p) && !out[p])
-      out[p] = std::make_shared<SlotCutter>(in.patches[p].shape, params, in.tolerance);
+    if (!wanted(p) || out[p]) return;
+    std::vector<double> lines;
+    for (const PatchHinge& h : patchHinges(in, std::vector<SlotPair>(in.hinges.size()), static_cast<int>(p)))
+      lines.push_back(h.x);
+    out[p] = std::make_shared<SlotCutter>(in.patches[p].shape, params, in.tolerance, lines);
   });
   for (size_t p = 0; p < n; ++p)
     if (wanted(p) && cached(p)) cache->emplace(key(p), out[p]);

@@ -245,7 +245,8 @@ int slottedPieces(const Region2d& shape, const Region2d& slotted, const SlotPara
   return std::max(kept, opened);
 }
 
-SlotCutter::SlotCutter(const Region2d& shape, const SlotParams& params, double tolerance)
+SlotCutter::SlotCutter(const Region2d& shape, const SlotParams& params, double tolerance,
+                       const std::vector<double>& lines)
     : shape_(shape),
       crumb_(slotCrumb(params)),
       neck_(slotNeck(params, tolerance)),
@@ -255,8 +256,8 @@ SlotCutter::SlotCutter(const Region2d& shape, const SlotParams& params, double t
       shapePieces_(openedPiecesOfEroded(erodedShape_, neck_, crumb_)),
       // A grown slot is a slot and two necks wide: wider, it is slots on lines closer than
       // that grown into one, or paper cleared beside them (cutAs), counted on the whole.
-      columns_(
-          std::make_unique<ErodedColumns>(erodedShape_, neck_, crumb_, 2 * (params.width() + 2 * neck_))) {}
+      columns_(std::make_unique<ErodedColumns>(erodedShape_, neck_, crumb_, 2 * (params.width() + 2 * neck_),
+                                               lines, params.width() / 2)) {}
 
 Region2d SlotCutter::keep(const Region2d& cleared, int* kept, bool united) const {
   std::vector<Region2d> pieces;

@@ -125,7 +125,9 @@ int slottedPieces(const Region2d& shape, const Region2d& slotted, const SlotPara
 // of under kSliverCrumbs crumbs that only such a bridge holds) are cut away with it.
 class SlotCutter {
  public:
-  SlotCutter(const Region2d& shape, const SlotParams& params, double tolerance);
+  // `lines`: the patch's hinge lines, where its slots will be (ErodedColumns), if known.
+  SlotCutter(const Region2d& shape, const SlotParams& params, double tolerance,
+             const std::vector<double>& lines = {});
 
   // What the neck test alone says of the shape less `slots`: its opened pieces beyond those
   // the shape had, plus one, and the slivers among them. cut() counts at least as many
