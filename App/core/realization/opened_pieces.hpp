@@ -41,7 +41,7 @@ struct OpenedPart;  // one connected piece of an eroded region (opened_pieces.cp
 // The patch is cut once along the columns' sides: the pieces between columns are kept, and
 // so is the patch within each column. A choice then costs a Boolean of one column's paper
 // with that column's slots, kept too (two choices differ in a slot or two), where one
-// Boolean of the whole patch with every slot was 80 % of the neck test (occ/Top.brep).
+// Boolean of the whole patch with every slot was 79 % of the neck test (occ/Top.brep).
 // Pieces that share a stretch of a column's side are one piece of paper; the rest is the
 // neck test as before, which links the pieces closer than two necks anyway. So the count
 // is the one of the patch less the slots, but for rounding to Clipper's units where an
