@@ -159,8 +159,9 @@ TEST(Slots, ColumnsCountAsTheWholePatch) {
     const double widest = 2 * (params.width() + 2 * neck);
     std::vector<double> lines;
     for (int line = 0; line < 12; ++line) lines.push_back(1.1 + 2.4 * line);
-    const ErodedColumns asTheyCome(eroded, neck, crumb, widest);
-    const ErodedColumns known(eroded, neck, crumb, widest, lines, params.width() / 2);
+    const double reach = neck + SlotCutter::kNeckArcTolerance;
+    const ErodedColumns asTheyCome(eroded, neck, crumb, widest, reach);
+    const ErodedColumns known(eroded, neck, crumb, widest, reach, lines, params.width() / 2);
     for (int trial = 0; trial < 60; ++trial) {
       params.end = trial % 3 == 0 ? SlotEnd::Round : SlotEnd::Square;
       std::vector<SlotCut> cuts;

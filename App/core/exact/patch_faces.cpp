@@ -124,7 +124,7 @@ std::vector<TopoDS_Shape> slotFaces(const SlotShapes& shapes, const SliceFrame& 
   std::vector<TopoDS_Shape> out;
   const gp_Pln pln = plane(frame, position);
   for (const Box2& b : shapes.rectangles) {
-    const Region2d::Loop loop{{b.min.x, b.min.y}, {b.max.x, b.min.y}, {b.max.x, b.max.y}, {b.min.x, b.max.y}};
+    const Region2d::Loop loop = Region2d::rectangle(b.min.x, b.min.y, b.max.x, b.max.y);
     out.push_back(BRepBuilderAPI_MakeFace(pln, polygonWire(loop, frame, position), Standard_False).Face());
   }
   for (const Disc& d : shapes.discs) {

@@ -67,6 +67,10 @@ class Region2d {
   static Region2d overlaid(const std::vector<Region2d>& regions);
   // Loops in mm, counterclockwise, as they are: overlaid, not united.
   static Region2d overlaidLoops(const std::vector<Loop>& loops);
+  // The axis-aligned rectangle [x0, x1] x [y0, y1] as a counterclockwise loop.
+  static Loop rectangle(double x0, double y0, double x1, double y1) {
+    return {{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}};
+  }
   // Each loop alone, as it is, a region of its own: a region without holes in its pieces.
   std::vector<Region2d> loopsApart() const;
 

@@ -228,10 +228,6 @@ std::vector<size_t> joinedAlongSides(const std::vector<const OpenedPart*>& parts
   return link;
 }
 
-Region2d::Loop rectangle(double x0, double y0, double x1, double y1) {
-  return {{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}};
-}
-
 // On Region2d's grid: a column's sides are where its Booleans put them.
 double snapped(double mm) {
   return std::round(mm * Region2d::kUnitsPerMm) / Region2d::kUnitsPerMm;
@@ -285,10 +281,10 @@ struct ErodedColumns::Layout {
   }
 };
 
-ErodedColumns::ErodedColumns(const Region2d& eroded, double neck, double crumb, double widest,
+ErodedColumns::ErodedColumns(const Region2d& eroded, double neck, double crumb, double widest, double reach,
                              const std::vector<double>& lines, double halfWidth)
-    : eroded_(&eroded), neck_(neck), crumb_(crumb), widest_(widest) {
-  for (const double x : lines) expected_.emplace_back(x - halfWidth - reach(), x + halfWidth + reach());
+    : eroded_(&eroded), neck_(neck), crumb_(crumb), widest_(widest), reach_(reach + 1e-5) {
+  for (const double x : lines) expected_.emplace_back(x - halfWidth - reach_, x + halfWidth + reach_);
 }
 
 ErodedColumns::~ErodedColumns() = default;
@@ -323,11 +319,11 @@ std::shared_ptr<const ErodedColumns::Layout> ErodedColumns::layoutFor(
   std::vector<Region2d::Loop> columns, gaps;
   double from = x0;
   for (const Range& c : next->columns) {
-    columns.push_back(rectangle(c.first, y0, c.second, y1));
-    if (c.first > from) gaps.push_back(rectangle(from, y0, c.first, y1));
+    columns.push_back(Region2d::rectangle(c.first, y0, c.second, y1));
+    if (c.first > from) gaps.push_back(Region2d::rectangle(from, y0, c.first, y1));
     from = std::max(from, c.second);
   }
-  if (x1 > from) gaps.push_back(rectangle(from, y0, x1, y1));
+  if (x1 > from) gaps.push_back(Region2d::rectangle(from, y0, x1, y1));
   next->between = keptParts(eroded_->subtractComponentsRaw(Region2d::overlaidLoops(columns)), next->sides);
   next->within.resize(next->columns.size());
   for (OpenedPart& part :
@@ -380,7 +376,7 @@ std::optional<int> ErodedColumns::less(const Region2d& slots, const Grow& grow, 
     double lo = loop.front().x, hi = lo;
     for (const Vec2& p : loop) lo = std::min(lo, p.x), hi = std::max(hi, p.x);
     if (hi - lo + 2 * neck_ > widest_) return std::nullopt;
-    ranges.emplace_back(lo - reach(), hi + reach());
+    ranges.emplace_back(lo - reach_, hi + reach_);
   }
   if (eroded_->empty()) return 0;
   const std::shared_ptr<const Layout> layout = layoutFor(ranges);

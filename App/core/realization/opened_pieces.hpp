@@ -50,10 +50,12 @@ struct OpenedPart;  // one connected piece of an eroded region (opened_pieces.cp
 class ErodedColumns {
  public:
   // `eroded` must outlive this. Slots wider than `widest` mm, grown, are not put in columns.
+  // `reach`: how far mm a slot's grown strip may stand beyond the slot's own x range (the
+  // neck, and how far the grown corners' chords may lie beyond their arcs).
   // `lines`: where slots are expected (the patch's hinge lines), `halfWidth` mm either side
   // of them before the neck: their columns are made with the first count's, not one by one
   // as their slots come (occ/Top.brep: 991 layouts for 523 patches' cutters).
-  ErodedColumns(const Region2d& eroded, double neck, double crumb, double widest,
+  ErodedColumns(const Region2d& eroded, double neck, double crumb, double widest, double reach,
                 const std::vector<double>& lines = {}, double halfWidth = 0);
   ~ErodedColumns();
 
@@ -76,12 +78,9 @@ class ErodedColumns {
   std::shared_ptr<const Parts> columnLess(const Layout& layout, size_t column,
                                           const std::vector<Region2d::Loop>& slots, const Grow& grow) const;
 
-  // Each slot's column, from its own x range: its grown strip reaches a neck further, and
-  // its round corners' chords (SlotCutter::kNeckArcTolerance) no further than 0.01 mm more.
-  double reach() const { return neck_ + 0.01 + 1e-5; }
-
   const Region2d* eroded_;
   double neck_, crumb_, widest_;
+  double reach_;                 // `reach` and a unit of Region2d's grid
   std::vector<Range> expected_;  // the columns of `lines`, for the first layout
   mutable std::mutex mutex_;
   mutable std::shared_ptr<const Layout> layout_;

@@ -43,10 +43,6 @@ double openEnd(const VerticalLines& shape, double x, double halfWidth, double en
   return end + dir * run;
 }
 
-Region2d::Loop rectangle(double x0, double y0, double x1, double y1) {
-  return {{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}};
-}
-
 Region2d::Loop disc(double cx, double cy, double r) {
   Region2d::Loop out;
   const int n = 48;
@@ -209,7 +205,8 @@ namespace {
 std::vector<Region2d::Loop> slotLoops(const std::vector<SlotCut>& cuts, const SlotParams& params) {
   const SlotShapes shapes = slotShapes(cuts, params);
   std::vector<Region2d::Loop> loops;
-  for (const Box2& b : shapes.rectangles) loops.push_back(rectangle(b.min.x, b.min.y, b.max.x, b.max.y));
+  for (const Box2& b : shapes.rectangles)
+    loops.push_back(Region2d::rectangle(b.min.x, b.min.y, b.max.x, b.max.y));
   for (const Disc& d : shapes.discs) loops.push_back(disc(d.centre.x, d.centre.y, d.radius));
   return loops;
 }
@@ -257,7 +254,7 @@ SlotCutter::SlotCutter(const Region2d& shape, const SlotParams& params, double t
       // A grown slot is a slot and two necks wide: wider, it is slots on lines closer than
       // that grown into one, or paper cleared beside them (cutAs), counted on the whole.
       columns_(std::make_unique<ErodedColumns>(erodedShape_, neck_, crumb_, 2 * (params.width() + 2 * neck_),
-                                               lines, params.width() / 2)) {}
+                                               neck_ + kNeckArcTolerance, lines, params.width() / 2)) {}
 
 Region2d SlotCutter::keep(const Region2d& cleared, int* kept, bool united) const {
   std::vector<Region2d> pieces;
