@@ -436,6 +436,38 @@ TEST(RebuiltFaces, ARunTheCrossingsLeaveNoLengthIsDropped) {
   EXPECT_NEAR(area(rebuilt), area(fused), 1e-4);
 }
 
+// A crossing at a shallow angle: a rectangle's top edge and a large circle that rises
+// 0.38 mm above it, meeting it at 5°. Each polygon lies within the deflection of its curve,
+// so the polygons cross 0.6 mm along the edge from where the curves do: further than ten
+// deflections. The edges still end where the curves cross, and the face's wire does not
+// cross itself (occt-misc Ball.brep: a section's circle meets a slot's wall at 5°; the
+// faces trimmed at the polygons' crossing failed BRepCheck as self-intersecting).
+TEST(RebuiltFaces, AShallowCrossingIsWhereTheCurvesCross) {
+  const gp_Pln plane(gp_Pnt(0, 0, 0), gp_Dir(0, 0, 1));
+  const double radius = 100, rise = radius * (1 - std::cos(5 * M_PI / 180));
+  const gp_Circ circle(gp_Ax2(gp_Pnt(0, rise - radius, 0), gp_Dir(0, 0, 1), gp_Dir(0, -1, 0)), radius);
+  const TopoDS_Face disc =
+      BRepBuilderAPI_MakeFace(plane, BRepBuilderAPI_MakeWire(BRepBuilderAPI_MakeEdge(circle)).Wire()).Face();
+  BRepBuilderAPI_MakePolygon box(gp_Pnt(-20, -8, 0), gp_Pnt(20, -8, 0), gp_Pnt(20, 0, 0), gp_Pnt(-20, 0, 0),
+                                 Standard_True);
+  const std::vector<TopoDS_Shape> sections{BRepBuilderAPI_MakeFace(plane, box.Wire()).Face(), disc};
+  const double deflection = 0.025;
+  const TopoDS_Shape rebuilt = rebuiltUnion(sections, deflection);
+  ASSERT_FALSE(rebuilt.IsNull());
+  EXPECT_TRUE(BRepCheck_Analyzer(rebuilt).IsValid());
+  // The circle meets the top edge at x = ±R sin 5°, y = 0: a vertex there, tight.
+  const double x = radius * std::sin(5 * M_PI / 180);
+  int crossings = 0;
+  for (TopExp_Explorer v(rebuilt, TopAbs_VERTEX); v.More(); v.Next()) {
+    const TopoDS_Vertex& vertex = TopoDS::Vertex(v.Current());
+    const gp_Pnt p = BRep_Tool::Pnt(vertex);
+    crossings += std::abs(std::abs(p.X()) - x) < 1e-6 && std::abs(p.Y()) < 1e-6;
+    EXPECT_LT(BRep_Tool::Tolerance(vertex), 1e-5);
+  }
+  EXPECT_EQ(crossings, 2 * 2);  // each crossing is the vertex of two edges
+  EXPECT_NEAR(area(rebuilt), area(BRepAlgoAPI_Fuse(sections[0], sections[1]).Shape()), 1e-4);
+}
+
 // A mesh patch's outline loses the points that add nothing within the tolerance: a circle of
 // 2000 points (as a fine scan gives) with a slot and a hole keeps its slot corners, its hole
 // and its area, with far fewer points.
