@@ -34,6 +34,9 @@ namespace {
 // How far a vertex of the combined polygon may lie from the polygon it came from: Clipper
 // rounds to 10 nm units, and its cleaning drops vertices within 1.415 units of a line.
 constexpr double kOnPolygon = 4 / Region2d::kUnitsPerMm;
+// The sine of the shallowest crossing (1°) whose place refineCrossing seeks beyond its
+// fixed reach: below it the curves touch more than they cross.
+constexpr double kShallowest = 0.0175;
 
 // One exact edge and its polygon, in parameter order.
 struct Source {
@@ -131,10 +134,12 @@ void refineCrossing(const Source& a, double& ta, const Source& b, double& tb, do
   // shallow crossing further than a fixed reach (occt-misc Ball.brep: a section's circle
   // meets a slot's wall at 5°, its polygon's crossing 0.3 mm off). Trimmed at the polygons'
   // crossing, the curves cross again beside the vertex, and the face's wire crosses itself.
+  // Curves that touch (under kShallowest) have no one crossing to find: Newton slides along
+  // them (Bottom.brep: 0.95 mm from a gap of 8 µm), and only the fixed reach holds.
   const double sine = da.Magnitude() > 0 && db.Magnitude() > 0
                           ? da.Crossed(db).Magnitude() / (da.Magnitude() * db.Magnitude())
                           : 0.0;
-  const double reach = 10 * deflection + (sine > 0 ? 4 * deflection / sine : 0.0);
+  const double reach = 10 * deflection + (sine >= kShallowest ? 4 * deflection / sine : 0.0);
   if (pa.Distance(pb) < a0.Distance(b0) && pa.Distance(a0) < reach && pb.Distance(b0) < reach)
     ta = sa, tb = sb;
 }
