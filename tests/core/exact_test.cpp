@@ -468,6 +468,36 @@ TEST(RebuiltFaces, AShallowCrossingIsWhereTheCurvesCross) {
   EXPECT_NEAR(area(rebuilt), area(BRepAlgoAPI_Fuse(sections[0], sections[1]).Shape()), 1e-4);
 }
 
+// Crumbs are holes narrower than the width asked all along: a sliver triangle 4 µm wide
+// touching the outer loop (stanford-bunny.obj's, after simplification) and a 3 µm dot go;
+// a 1 mm hole and a slit 30 µm wide and 3 mm long stay, and a region with no crumb is
+// returned as it was.
+TEST(ExactPatches, CrumbHolesAreFilledAndRealHolesStay) {
+  const Region2d::Loop outer{{0, 0}, {40, 0}, {40, 30}, {0, 30}};
+  const Region2d::Loop hole{{10, 10}, {10, 11}, {11, 11}, {11, 10}};        // clockwise
+  const Region2d::Loop slit{{20, 10}, {20, 13}, {20.03, 13}, {20.03, 10}};  // 30 µm wide
+  const Region2d::Loop sliver{{0, 5}, {0.2, 5}, {0.2, 5.004}};              // 4 µm wide, touches x = 0
+  const Region2d::Loop dot{{30, 20}, {30, 20.003}, {30.003, 20.003}, {30.003, 20}};
+  const double width = kOutlineDeflection / 4;
+  EXPECT_FALSE(isCrumb(hole, width));
+  EXPECT_FALSE(isCrumb(slit, width));
+  EXPECT_TRUE(isCrumb(sliver, width));
+  EXPECT_TRUE(isCrumb(dot, width));
+  const Region2d clean = Region2d::fromLoops({outer, hole, slit});
+  const Region2d same = withoutCrumbs(clean, width);
+  ASSERT_EQ(same.loops().size(), clean.loops().size());
+  for (size_t k = 0; k < same.loops().size(); ++k)
+    for (size_t i = 0; i < same.loops()[k].size(); ++i) {
+      EXPECT_EQ(same.loops()[k][i].x, clean.loops()[k][i].x);
+      EXPECT_EQ(same.loops()[k][i].y, clean.loops()[k][i].y);
+    }
+  const Region2d crumbed = Region2d::fromLoops({outer, hole, slit, sliver, dot});
+  EXPECT_EQ(crumbed.holeCount(), 4);
+  const Region2d filled = withoutCrumbs(crumbed, width);
+  EXPECT_EQ(filled.holeCount(), 2);
+  EXPECT_NEAR(filled.area(), clean.area(), 1e-9);
+}
+
 // A mesh patch's outline loses the points that add nothing within the tolerance: a circle of
 // 2000 points (as a fine scan gives) with a slot and a hole keeps its slot corners, its hole
 // and its area, with far fewer points.

@@ -24,6 +24,7 @@
 #include <optional>
 #include <unordered_map>
 
+#include "geometry/simplify.hpp"
 #include "slicing/brep_slicer.hpp"
 #include "slicing/edge_samples.hpp"
 #include "slicing/surface_sections.hpp"
@@ -228,15 +229,6 @@ std::optional<Region2d::Loop> withSteps(const Region2d::Loop& loop, const std::v
     }
   }
   return out;
-}
-
-double perimeter(const Region2d::Loop& loop) {
-  double length = 0;
-  for (size_t i = 0; i < loop.size(); ++i) {
-    const Vec2 a = loop[i], b = loop[(i + 1) % loop.size()];
-    length += std::hypot(b.x - a.x, b.y - a.y);
-  }
-  return length;
 }
 
 // Whether the faces' polygon is the region. They may differ in bands along the boundary:
@@ -504,7 +496,7 @@ TopoDS_Shape rebuiltFaces(const std::vector<TopoDS_Shape>& shapes,
       // of one ellipse enclose no area and touch the outer loop, and the face fails
       // BRepCheck ("intersecting wires"). sameRegion below still compares the face with the
       // region, crumb included.
-      if (face && -Region2d::signedArea(loop) < perimeter(loop) * deflection / 8) continue;
+      if (face && isCrumb(loop, deflection / 4)) continue;
       const std::vector<TopoDS_Edge> edges = loopEdges(loop, sources, grid, frame, position, deflection);
       if (edges.empty()) return {};
       TopoDS_Wire wire;

@@ -650,4 +650,11 @@ double Region2d::signedArea(const Loop& loop) {
   return twice / 2;
 }
 
+double Region2d::perimeter(const Loop& loop) {
+  double length = 0;
+  for (size_t i = 0, j = loop.size() - 1; i < loop.size(); j = i++)
+    length += std::hypot(loop[i].x - loop[j].x, loop[i].y - loop[j].y);
+  return length;
+}
+
 }  // namespace sliceform

@@ -151,6 +151,8 @@ class Region2d {
 
   // Shoelace area of one loop, mm²: positive for an outer loop, negative for a hole.
   static double signedArea(const Loop& loop);
+  // Length of one loop's boundary, mm.
+  static double perimeter(const Loop& loop);
   static ClipperLib::cInt toUnits(double mm);
   static double toMm(ClipperLib::cInt units) { return static_cast<double>(units) / kUnitsPerMm; }
 

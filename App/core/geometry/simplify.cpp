@@ -5,6 +5,8 @@
 #include <boost/geometry/geometries/point_xy.hpp>
 #include <boost/geometry/geometries/ring.hpp>
 
+#include <algorithm>
+#include <cmath>
 #include <vector>
 
 namespace sliceform {
@@ -26,6 +28,20 @@ Region2d simplified(const Region2d& region, double tolerance) {
     loops.emplace_back();
     for (size_t i = 0; i + 1 < simpler.size(); ++i) loops.back().push_back({simpler[i].x(), simpler[i].y()});
   }
+  return Region2d::fromLoops(loops, FillRule::EvenOdd);
+}
+
+bool isCrumb(const Region2d::Loop& hole, double width) {
+  return std::abs(Region2d::signedArea(hole)) < Region2d::perimeter(hole) * width / 2;
+}
+
+Region2d withoutCrumbs(const Region2d& region, double width) {
+  std::vector<Region2d::Loop> loops = region.loops();
+  const auto crumb = [&](const Region2d::Loop& l) {
+    return Region2d::signedArea(l) < 0 && isCrumb(l, width);
+  };
+  if (std::none_of(loops.begin(), loops.end(), crumb)) return region;
+  loops.erase(std::remove_if(loops.begin(), loops.end(), crumb), loops.end());
   return Region2d::fromLoops(loops, FillRule::EvenOdd);
 }
 

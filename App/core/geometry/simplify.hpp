@@ -13,4 +13,13 @@ namespace sliceform {
 // is kept as it was rather than lost.
 Region2d simplified(const Region2d& region, double tolerance);
 
+// Whether a loop (a hole, either way round) is a crumb, narrower than `width` all along:
+// its area is under its perimeter times width / 2 (a strip w wide and L long has area wL,
+// perimeter 2L + 2w). Where a slice grazes a surface, rounding leaves such holes of a few
+// micrometres, often touching the outer loop: no hole to cut, and a face BRepCheck rejects.
+bool isCrumb(const Region2d::Loop& hole, double width);
+
+// The region with its crumb holes (isCrumb) filled; the region itself where it has none.
+Region2d withoutCrumbs(const Region2d& region, double width);
+
 }  // namespace sliceform
