@@ -38,6 +38,11 @@ constexpr double kOnPolygon = 4 / Region2d::kUnitsPerMm;
 // The sine of the shallowest crossing (1°) whose place refineCrossing seeks beyond its
 // fixed reach: below it the curves touch more than they cross.
 constexpr double kShallowest = 0.0175;
+// mm: a run shorter than this that turns back along its neighbour is a spike of rounding,
+// no edge (a micrometre, ten thousand times OCCT's Precision::Confusion).
+constexpr double kShortestEdge = 1e-3;
+// The cosine beyond which two directions are one line, turned back.
+constexpr double kAntiParallel = 0.999;
 
 // One exact edge and its polygon, in parameter order.
 struct Source {
@@ -382,10 +387,30 @@ std::vector<TopoDS_Edge> loopEdges(const Region2d::Loop& original, const std::ve
   for (size_t r = 0; r < runs.size(); ++r) refine(r);
   // A run its crossings leave no stretch of its curve is dropped, and its neighbours cross
   // each other: two curves that cross on a third (occt-misc Motor-c.brep: two ellipses on a
-  // slot's wall, their polygons 2 µm apart there).
+  // slot's wall, their polygons 2 µm apart there). So is a spike: a run under
+  // kShortestEdge that turns back along its neighbour (MODERN_Exhaust_1.brep: 0.16 µm back
+  // along a slot's wall, an edge BRepCheck finds crossing the one before). A short run
+  // square to its neighbours is a step, and stays (MODERN_Sink_1.brep: dropped, its
+  // neighbours' crossing split a patch).
+  const auto spike = [&](size_t r, double lo, double hi) {
+    const Run& run = runs[r];
+    const Source& s = sources[run.source];
+    if (s.curve->Value(lo).Distance(s.curve->Value(hi)) >= kShortestEdge) return false;
+    const auto direction = [&](const Run& x, double t) {
+      gp_Pnt p;
+      gp_Vec d;
+      sources[x.source].curve->D1(t, p, d);
+      return d.Magnitude() > 0 ? (x.t1 < x.t0 ? -d : d) / d.Magnitude() : d;
+    };
+    const gp_Vec own = direction(run, (run.t0 + run.t1) / 2);
+    const Run& before = runs[(r + runs.size() - 1) % runs.size()];
+    const Run& after = runs[(r + 1) % runs.size()];
+    return own.Dot(direction(before, before.t1)) < -kAntiParallel ||
+           own.Dot(direction(after, after.t0)) < -kAntiParallel;
+  };
   double lo, hi;
   for (size_t r = 0; r < runs.size() && runs.size() > 2;) {
-    if (stretch(sources[runs[r].source], runs[r], lo, hi)) {
+    if (stretch(sources[runs[r].source], runs[r], lo, hi) && !spike(r, lo, hi)) {
       ++r;
       continue;
     }
