@@ -220,6 +220,26 @@ TEST(ExactPatches, PolygonFacesOfAMesh) {
   EXPECT_EQ(wires, 2);
 }
 
+// Holes that touch the outer loop or each other at a point (Clipper's output is not strictly
+// simple; diplodocus.off in plywood): the face is still one valid face of that polygon, its
+// holes kept, not wires that BRepCheck finds intersecting.
+TEST(ExactPatches, PolygonFacesWithTouchingHolesAreValid) {
+  const Region2d::Loop outer{{0, 0}, {40, 0}, {40, 40}, {0, 40}};
+  const Region2d::Loop onEdge{{0, 20}, {5, 21}, {5, 19}};  // touches x = 0 at (0, 20)
+  const Region2d::Loop first{{10, 10}, {10, 15}, {15, 15}, {15, 10}};
+  const Region2d::Loop second{{15, 15}, {15, 20}, {20, 20}, {20, 15}};  // touches first at (15, 15)
+  const Region2d region = Region2d::fromLoops({outer, onEdge, first, second});
+  ASSERT_EQ(region.holeCount(), 3);
+  const SliceFrame frame = makeSliceFrame({1, 0, 0}, {0, 0, 1});
+  const TopoDS_Shape face = facesFromRegion(region, frame, 7);
+  EXPECT_TRUE(BRepCheck_Analyzer(face).IsValid());
+  int faces = 0;
+  for (TopExp_Explorer it(face, TopAbs_FACE); it.More(); it.Next()) ++faces;
+  EXPECT_EQ(faces, 1);
+  EXPECT_NEAR(area(face), region.area(), 1e-6);
+  EXPECT_NEAR(area(face), 1600 - 5 - 25 - 25, 1e-6);
+}
+
 // Only sections that add to a cylinder's union are fused: nested and repeated ones are left
 // out, shifted ones kept, and the union of those kept is the union of all.
 TEST(ExactPatches, OnlySectionsThatAddToTheUnionAreFused) {
