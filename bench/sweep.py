@@ -1,8 +1,9 @@
 #!/usr/bin/python3
 # SPDX-License-Identifier: LGPL-2.1-or-later
 """Buildability sweep (issue 14): `sliceform design` on every model at hand, each design
-checked on its own by ../shared/tools/check_report.py. A model passes when it builds
-(exit 0) and the checker accepts it, or when it is refused (exit 1, 3 or 4) with one
+checked on its own by ../shared/tools/check_report.py, and every face of its assembly
+through OCCT's BRepCheck (bench/faces_valid.py). A model passes when it builds (exit 0),
+the checker accepts it and every face is valid, or when it is refused (exit 1, 3 or 4) with one
 clear line that is not an internal error. Anything else fails the sweep: a design we call
 buildable that the checker rejects, a crash, a run that does not end.
 
@@ -73,9 +74,17 @@ def run_one(cli, checker, model, args, out, timeout):
         c = subprocess.run([sys.executable, checker, report_path], capture_output=True, text=True)
         row["checker"] = json.loads(c.stdout) if c.stdout.strip() else {"ok": False, "problems": [c.stderr]}
     if p.returncode == 0:
+        # The assembly a CAD program reads: every face must pass OCCT's BRepCheck.
+        f = subprocess.run([sys.executable, os.path.join(HERE, "faces_valid.py"),
+                            os.path.join(folder, "assembly.brep")], capture_output=True, text=True)
+        faces = json.loads(f.stdout) if f.returncode == 0 else {"faces": 0, "invalid": [[-1, f.stderr.strip()]]}
+        row["faces"], row["invalid_faces"] = faces["faces"], faces["invalid"]
         ok = row.get("checker", {}).get("ok", False)
-        row["verdict"] = "builds" if ok else "FAIL"
-        row["reason"] = "" if ok else "exit 0 but the checker rejects it: %s" % row.get("checker", {}).get("problems")
+        row["verdict"] = "builds" if ok and not faces["invalid"] else "FAIL"
+        reasons = [] if ok else ["exit 0 but the checker rejects it: %s" % row.get("checker", {}).get("problems")]
+        if faces["invalid"]:
+            reasons.append("assembly faces failing BRepCheck: %s" % faces["invalid"][:3])
+        row["reason"] = "; ".join(reasons)
     elif p.returncode in REFUSED and row["message"] and "internal error" not in row["message"]:
         row["verdict"] = "refused"
         row["reason"] = row["message"][len("sliceform: "):]
@@ -95,14 +104,15 @@ def fmt(v, digits=2):
 
 def table(rows):
     lines = ["| model | exit | verdict | patches | sheets | min spacing mm | min finger mm | split | interlocks "
-             "| labels missing | IoU U / V / vol | s | reason |",
-             "|---|---:|---|---:|---:|---:|---:|---:|---:|---:|---|---:|---|"]
+             "| labels missing | faces (invalid) | IoU U / V / vol | s | reason |",
+             "|---|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|---|---:|---|"]
     for r in rows:
         iou = "/".join(fmt(x, 3) for x in r["iou"]) if r.get("iou") else "-"
-        lines.append("| %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s |" % (
+        faces = "%d (%d)" % (r["faces"], len(r["invalid_faces"])) if "faces" in r else "-"
+        lines.append("| %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s |" % (
             r["model"], fmt(r.get("rc")), r["verdict"], fmt(r.get("patches")), fmt(r.get("sheets")),
             fmt(r.get("min_spacing")), fmt(r.get("min_finger")), fmt(r.get("split")), fmt(r.get("interlocks")),
-            fmt(r.get("labels_missing")), iou, fmt(r.get("time_s"), 1), r.get("reason", "").replace("|", "/")[:160]))
+            fmt(r.get("labels_missing")), faces, iou, fmt(r.get("time_s"), 1), r.get("reason", "").replace("|", "/")[:160]))
     return "\n".join(lines)
 
 
