@@ -5,12 +5,14 @@
 #include <BRepAlgoAPI_Cut.hxx>
 #include <BRepBuilderAPI_MakeEdge.hxx>
 #include <BRepBuilderAPI_MakeWire.hxx>
+#include <BRepGProp.hxx>
 #include <BRepOffsetAPI_ThruSections.hxx>
 #include <BRepPrimAPI_MakeBox.hxx>
 #include <BRepPrimAPI_MakeCylinder.hxx>
 #include <BRepPrimAPI_MakeSphere.hxx>
 #include <BRepPrimAPI_MakeTorus.hxx>
 #include <BRep_Builder.hxx>
+#include <GProp_GProps.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopoDS.hxx>
 #include <TopoDS_Shape.hxx>
@@ -92,6 +94,13 @@ inline double discArea(double radius, double h) {
 // Torus around the slicing axis: an annulus between radii major -/+ sqrt(minor² - h²).
 inline double torusArea(double major, double minor, double h) {
   return 4 * M_PI * major * std::sqrt(std::fmax(0.0, minor * minor - h * h));
+}
+
+// The area of a shape's faces, mm² (OCCT's surface integration).
+inline double area(const TopoDS_Shape& shape) {
+  GProp_GProps props;
+  BRepGProp::SurfaceProperties(shape, props);
+  return props.Mass();
 }
 
 inline TopoDS_Shape makeSphere(double radius) {
